@@ -1,0 +1,38 @@
+# All dependencies are Debian 12 packages (scripts/install-deps.sh installs them).
+find_package(OpenMP REQUIRED)
+find_package(tinyobjloader REQUIRED)
+find_package(OpenImageIO REQUIRED CONFIG)
+find_package(nlohmann_json REQUIRED)
+find_package(glm REQUIRED)
+find_package(CLI11 REQUIRED)
+
+# Debian 12 trap: OpenImageIO's exported targets list /usr/include/opencv4, which exists only when
+# OpenCV is installed; CMake then refuses to configure. Drop include directories that do not exist.
+foreach(target OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)
+  if(TARGET ${target})
+    foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+      get_target_property(dirs ${target} ${prop})
+      if(dirs)
+        set(kept "")
+        foreach(dir IN LISTS dirs)
+          if(dir MATCHES "^\\$<" OR EXISTS "${dir}")
+            list(APPEND kept "${dir}")
+          endif()
+        endforeach()
+        set_target_properties(${target} PROPERTIES ${prop} "${kept}")
+      endif()
+    endforeach()
+  endif()
+endforeach()
+
+# Embree 3 is optional: only `rayvec bench rays --vs-embree` uses it.
+set(RAYVEC_HAVE_EMBREE OFF)
+if(RAYVEC_WITH_EMBREE)
+  find_package(embree 3 QUIET)
+  if(embree_FOUND)
+    set(RAYVEC_HAVE_EMBREE ON)
+    message(STATUS "rayvec: Embree ${embree_VERSION} found, --vs-embree enabled")
+  else()
+    message(STATUS "rayvec: Embree 3 not found, --vs-embree disabled")
+  endif()
+endif()

@@ -1,0 +1,15 @@
+# Runtime ISA dispatch: each ISA's code lives in files named *_avx2.cpp or *_avx512.cpp, compiled
+# with that ISA's flags (and only those files). Everything else is baseline x86-64, so the one binary
+# runs on any x86-64 CPU and picks its kernels by cpuid at run time. Never -march=native here.
+set(RAYVEC_AVX2_FLAGS -mavx2 -mfma -mbmi -mbmi2 -mlzcnt -mf16c -mpopcnt)
+set(RAYVEC_AVX512_FLAGS ${RAYVEC_AVX2_FLAGS} -mavx512f -mavx512dq -mavx512bw -mavx512vl -mavx512cd)
+
+function(rayvec_apply_isa_flags sources_var)
+  foreach(src IN LISTS ${sources_var})
+    if(src MATCHES "_avx512\\.cpp$")
+      set_source_files_properties(${src} PROPERTIES COMPILE_OPTIONS "${RAYVEC_AVX512_FLAGS}")
+    elseif(src MATCHES "_avx2\\.cpp$")
+      set_source_files_properties(${src} PROPERTIES COMPILE_OPTIONS "${RAYVEC_AVX2_FLAGS}")
+    endif()
+  endforeach()
+endfunction()

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs rayvec's build and test dependencies from Debian 12 packages (apt-get; sudo when not root).
+# Skips apt entirely when everything is already installed. Embree is optional (benchmark rival only):
+# pass --with-embree to install it too.
+set -euo pipefail
+packages=(build-essential cmake pkg-config
+          libtinyobjloader-dev libopenimageio-dev openimageio-tools libopenexr-dev
+          libglm-dev nlohmann-json3-dev libcli11-dev
+          libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev)
+[[ "${1:-}" == "--with-embree" ]] && packages+=(libembree-dev)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,24 @@
+// BruteForce: every ray against every triangle, W triangles per SIMD step — the paper's workload.
+#pragma once
+#include "accel/accelerator.h"
+#include "kernels/kernel_table.h"
+#include "kernels/triangle_soa.h"
+
+namespace rayvec {
+
+class BruteForce final : public Accelerator {
+ public:
+  BruteForce(const TriangleMesh& mesh, const TraceConfig& config);
+
+  Hit closest(const Ray& ray) const override;
+  bool occluded(const Ray& ray) const override;
+  std::size_t bytes() const override { return tris_.bytes(); }
+  const TraceConfig& config() const override { return config_; }
+
+ private:
+  TraceConfig config_;
+  TriangleSoA tris_;
+  const TriangleKernels* kernels_;
+};
+
+}  // namespace rayvec

@@ -1,0 +1,51 @@
+// CommandLine: rayvec's subcommands and their options, declared by each src/app/cmd_*.cpp.
+// A thin wrapper so that CLI11 is included by exactly one file (command_line.cpp).
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rayvec {
+
+class Command {
+ public:
+  // flags: "-o,--output" or "--threads"; help is shown by --help.
+  Command& option(const std::string& flags, std::string& out, const std::string& help);
+  Command& option(const std::string& flags, int& out, const std::string& help);
+  Command& option(const std::string& flags, double& out, const std::string& help);
+  Command& flag(const std::string& flags, bool& out, const std::string& help);
+  Command& required(const std::string& flags, std::string& out, const std::string& help);
+  Command& positional(const std::string& name, std::string& out, const std::string& help,
+                      bool required = true);
+  // Text shown after the options in --help (examples, formats).
+  Command& footer(const std::string& text);
+  // What runs when the command is chosen; returns the exit status.
+  Command& run(std::function<int()> action);
+  // A nested command, e.g. `bench paper`.
+  Command& subcommand(const std::string& name, const std::string& description);
+
+ private:
+  friend class CommandLine;
+  explicit Command(void* app) : app_(app) {}
+  void* app_;  // CLI::App*
+  std::vector<std::unique_ptr<Command>> children_;
+};
+
+class CommandLine {
+ public:
+  CommandLine(const std::string& name, const std::string& description);
+  ~CommandLine();
+  Command& command(const std::string& name, const std::string& description);
+  Command& root() { return *root_; }
+  // Parses argv and runs the chosen command. Usage errors and InputError give exit status 2,
+  // RuntimeError and other failures 1; messages go to stderr.
+  int main(int argc, char** argv);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Command> root_;
+};
+
+}  // namespace rayvec

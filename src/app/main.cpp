@@ -1,0 +1,28 @@
+// rayvec: the command-line front end. Each subcommand lives in its own cmd_*.cpp and registers here.
+#include <csignal>
+#include <cstdlib>
+#include <unistd.h>
+
+#include "app/command_line.h"
+#include "app/commands.h"
+#include "io/atomic_file.h"
+
+namespace {
+
+// Ctrl-C: remove any output still being written (AtomicFile temporaries), then exit 130.
+extern "C" void on_interrupt(int sig) {
+  rayvec::remove_open_temporaries_on_signal();
+  ::_exit(128 + sig);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  rayvec::CommandLine cli("rayvec",
+                          "rayvec: a SoA/SIMD Möller–Trumbore ray tracer.\n"
+                          "Run `rayvec COMMAND --help` for each command's options and examples.");
+  rayvec::register_info_command(cli);
+  return cli.main(argc, argv);
+}

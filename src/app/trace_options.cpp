@@ -1,0 +1,41 @@
+#include "app/trace_options.h"
+
+#include <omp.h>
+
+#include "app/command_line.h"
+#include "io/input_error.h"
+
+namespace rayvec {
+
+void add_trace_options(Command& cmd, TraceOptions& options, bool with_accel) {
+  cmd.option("--isa", options.isa,
+             "SIMD instruction set: auto (best this CPU has), scalar, avx2 or avx512")
+      .option("--intersector", options.intersector,
+              "ray-triangle arithmetic: mt (float, no epsilon), mt64 (double), paper "
+              "(Sena et al. 2018: |det| < 1e-6 culled, t > 1e-6)")
+      .option("--threads", options.threads, "OpenMP threads (0 = all cores)");
+  if (with_accel)
+    cmd.option("--accel", options.accel, "acceleration structure: brute (every triangle)");
+}
+
+TraceConfig resolve_trace_options(const TraceOptions& options) {
+  TraceConfig config;
+  if (const std::string err = resolve_isa(options.isa, config.isa); !err.empty())
+    throw InputError("--isa: " + err);
+  const auto intersector = parse_intersector(options.intersector);
+  if (!intersector)
+    throw InputError("--intersector: unknown '" + options.intersector +
+                     "' (choose mt, mt64 or paper)");
+  config.intersector = *intersector;
+  if (options.threads < 0) throw InputError("--threads: must be 0 (all cores) or more");
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  return config;
+}
+
+AccelKind resolve_accel(const TraceOptions& options) {
+  const auto kind = parse_accel(options.accel);
+  if (!kind) throw InputError("--accel: unknown '" + options.accel + "' (choose brute or bvh)");
+  return *kind;
+}
+
+}  // namespace rayvec

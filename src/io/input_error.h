@@ -1,0 +1,21 @@
+// The two kinds of failure every command reports (see docs: exit statuses).
+//   InputError   — the user's input or usage is wrong: exit status 2. Message: `file:line: what is wrong`.
+//   RuntimeError — the input was fine but the work failed (I/O, resources): exit status 1.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace rayvec {
+
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+  // `file:line: message` (line 0 means the whole file: `file: message`).
+  InputError(const std::string& file, std::size_t line, const std::string& message)
+      : std::runtime_error(file + (line ? ":" + std::to_string(line) : std::string()) + ": " + message) {}
+};
+
+struct RuntimeError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace rayvec

@@ -1,0 +1,40 @@
+// Intersector: which ray–triangle arithmetic a query uses. Every kernel (scalar, AVX2, AVX-512;
+// brute force or a BVH leaf) is instantiated once per intersector, so adding one (e.g. watertight)
+// means a new enum value and one instantiation per ISA unit — callers only pass the value through.
+#pragma once
+#include <optional>
+#include <string_view>
+
+namespace rayvec {
+
+enum class Intersector {
+  // The arithmetic of Sena et al. (2018), Figure 4, exactly: float Möller–Trumbore (Möller & Trumbore
+  // 1997) with f = 1/det, rejecting |det| < 1e-6 and accepting t > 1e-6 (and tmin <= t <= tmax).
+  // Kept to reproduce the paper. Contract: none beyond the paper's — the absolute epsilon culls small
+  // or distant triangles (a 1e-4-sized triangle has det ~ 1e-8 and is never hit), edges are closed
+  // up to float rounding of u = f·(s·h). NaN in a ray or vertex never yields a hit (ordered compares).
+  paper,
+
+  // Float Möller–Trumbore without any absolute epsilon: only det = 0 (a ray parallel to the plane, or a
+  // zero-area triangle) rejects, so tiny triangles are hit. Division-free barycentric tests with the
+  // sign of det folded in: u·|det| >= 0, v·|det| >= 0, (u+v)·|det| <= |det| — closed edges, evaluated
+  // in float with FMA in the SIMD kernels, so a ray through a shared edge hits at least one side
+  // except for rounding (not guaranteed watertight). t = (e2·q)/det by one correctly rounded division,
+  // accepted when tmin <= t <= tmax. Every comparison is ordered: a NaN or Inf-derived NaN anywhere
+  // fails it, so NaN input never produces a hit and never produces a NaN output. Degenerate
+  // (zero-area) triangles have det = 0 and never hit.
+  mt,
+
+  // The `mt` contract evaluated in double: float vertices converted exactly, edges computed in double
+  // from the vertices (not from float-rounded edges), t rounded to float at the end. About 2^29 times
+  // less rounding than `mt`; same NaN and degenerate guarantees; still not watertight.
+  mt64,
+};
+
+inline constexpr Intersector kAllIntersectors[] = {Intersector::paper, Intersector::mt,
+                                                   Intersector::mt64};
+
+const char* intersector_name(Intersector i);
+std::optional<Intersector> parse_intersector(std::string_view name);
+
+}  // namespace rayvec

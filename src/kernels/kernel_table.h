@@ -1,0 +1,36 @@
+// TriangleKernels: the function table one (ISA, intersector) pair provides. Brute force calls it on the
+// whole TriangleSoA, a BVH on each leaf's range; the table is chosen once (dispatch.cpp) and never
+// per ray.
+#pragma once
+#include <cstdint>
+
+#include "kernels/intersector.h"
+#include "kernels/isa.h"
+#include "kernels/triangle_soa.h"
+#include "rays/ray.h"
+
+namespace rayvec {
+
+struct TriangleKernels {
+  Isa isa;
+  Intersector intersector;
+  int width;  // triangles per SIMD step (16 AVX-512, 8 AVX2, 1 scalar; halved for double)
+
+  // Closest hit of `ray` among slots [begin, end): replaces `hit` when a triangle is hit with
+  // tmin <= t <= min(tmax, hit.t) and it is nearer than `hit` (equal t: lower id wins). `hit` must be
+  // a miss or a previous result for the same ray.
+  void (*closest)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit);
+
+  // True as soon as any triangle in [begin, end) is hit with tmin <= t <= tmax.
+  bool (*occluded)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray& ray);
+};
+
+// The table for an ISA the CPU supports (checked by the caller through isa_supported).
+const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector);
+
+// Per-ISA entry points, each defined in its own unit (moller_trumbore_<isa>.cpp).
+namespace scalar { const TriangleKernels& triangle_kernels(Intersector intersector); }
+namespace avx2 { const TriangleKernels& triangle_kernels(Intersector intersector); }
+namespace avx512 { const TriangleKernels& triangle_kernels(Intersector intersector); }
+
+}  // namespace rayvec

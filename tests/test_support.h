@@ -1,0 +1,21 @@
+// Helpers shared by the tests.
+#pragma once
+#include <string>
+
+namespace rayvec::test {
+
+struct CommandResult {
+  int status = -1;  // exit status
+  std::string out, err;
+};
+
+// Runs the rayvec binary with `args` (a shell-quoted string) and captures stdout and stderr.
+CommandResult run_cli(const std::string& args, const std::string& stdin_text = "");
+
+// A fresh empty directory under the build tree's temp area.
+std::string temp_dir(const std::string& name);
+
+std::string read_file(const std::string& path);
+void write_file(const std::string& path, const std::string& text);
+
+}  // namespace rayvec::test
