@@ -12,6 +12,7 @@
 
 #include "kernels/intersector.h"
 #include "kernels/isa.h"
+#include "kernels/kernel_table.h"
 #include "rays/ray.h"
 
 namespace rayvec {
@@ -33,8 +34,9 @@ class Accelerator {
 
   // Nearest hit with tmin <= t <= tmax; a miss is {tri = -1, t = inf}. Thread-safe.
   virtual Hit closest(const Ray& ray) const = 0;
-  // True when any triangle is hit with tmin <= t <= tmax. Thread-safe.
-  virtual bool occluded(const Ray& ray) const = 0;
+  // True when any triangle is hit with tmin <= t <= tmax and not ignored by `filter` (may be null).
+  // Thread-safe.
+  virtual bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const = 0;
   // n rays at once (e.g. a coherent camera tile); the default loops over closest().
   virtual void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const;
 

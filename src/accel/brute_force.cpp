@@ -11,8 +11,8 @@ Hit BruteForce::closest(const Ray& ray) const {
   return hit;
 }
 
-bool BruteForce::occluded(const Ray& ray) const {
-  return kernels_->occluded(tris_.arrays(), 0, tris_.size(), ray);
+bool BruteForce::occluded(const Ray& ray, const HitFilter* filter) const {
+  return kernels_->occluded(tris_.arrays(), 0, tris_.size(), ray, filter);
 }
 
 }  // namespace rayvec

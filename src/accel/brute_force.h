@@ -11,7 +11,7 @@ class BruteForce final : public Accelerator {
   BruteForce(const TriangleMesh& mesh, const TraceConfig& config);
 
   Hit closest(const Ray& ray) const override;
-  bool occluded(const Ray& ray) const override;
+  bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
   std::size_t bytes() const override { return tris_.bytes(); }
   const TraceConfig& config() const override { return config_; }
 

@@ -11,6 +11,13 @@
 
 namespace rayvec {
 
+// Lets an any-hit query ignore some triangles (e.g. the ones touching the vertex whose visibility is
+// asked). Called only for triangles that pass the intersection test, so misses cost nothing.
+struct HitFilter {
+  bool (*ignore)(const void* context, int32_t triangle_id);
+  const void* context;
+};
+
 struct TriangleKernels {
   Isa isa;
   Intersector intersector;
@@ -21,14 +28,16 @@ struct TriangleKernels {
   // a miss or a previous result for the same ray.
   void (*closest)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit);
 
-  // True as soon as any triangle in [begin, end) is hit with tmin <= t <= tmax.
-  bool (*occluded)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray& ray);
+  // True as soon as any triangle in [begin, end) is hit with tmin <= t <= tmax (and, with a filter,
+  // is not ignored by it). filter may be null.
+  bool (*occluded)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray& ray,
+                   const HitFilter* filter);
 };
 
 // The table for an ISA the CPU supports (checked by the caller through isa_supported).
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector);
 
-// Per-ISA entry points, each defined in its own unit (moller_trumbore_<isa>.cpp).
+// Per-ISA entry points, each defined in its own unit (triangle_kernels_<isa>.cpp).
 namespace scalar { const TriangleKernels& triangle_kernels(Intersector intersector); }
 namespace avx2 { const TriangleKernels& triangle_kernels(Intersector intersector); }
 namespace avx512 { const TriangleKernels& triangle_kernels(Intersector intersector); }

@@ -166,12 +166,18 @@ void closest_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const R
 }
 
 template <class V, Intersector I>
-bool occluded_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray) {
+bool occluded_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
+                   const HitFilter* filter) {
   using S = typename V::Scalar;
   const RayLanes<V> r = broadcast_ray<V>(ray);
   const V tlimit = V::broadcast(next_up(S(ray.tmax)));
-  for (uint32_t i = begin; i < end; i += V::W)
-    if (any(test_lanes<V, I>(T, i, r, first_lanes(V{}, end - i), tlimit).mask)) return true;
+  for (uint32_t i = begin; i < end; i += V::W) {
+    const typename V::Mask m = test_lanes<V, I>(T, i, r, first_lanes(V{}, end - i), tlimit).mask;
+    if (!any(m)) continue;
+    if (!filter) return true;
+    for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
+      if (!filter->ignore(filter->context, T.id[i + unsigned(__builtin_ctz(lanes))])) return true;
+  }
   return false;
 }
 

@@ -32,7 +32,7 @@ class MollerTrumbore : public ::testing::TestWithParam<Case> {
   bool occluded(const TriangleMesh& mesh, const Ray& ray) const {
     const TriangleSoA soa(mesh);
     return triangle_kernels(GetParam().isa, GetParam().intersector)
-        .occluded(soa.arrays(), 0, soa.size(), ray);
+        .occluded(soa.arrays(), 0, soa.size(), ray, nullptr);
   }
   bool epsilon_free() const { return GetParam().intersector != Intersector::paper; }
 };

@@ -1,19 +1,19 @@
-// Instantiates the Möller–Trumbore kernels (moller_trumbore.inl) for scalar. Thin on purpose: the
+// Instantiates the ray–triangle kernels (moller_trumbore.inl) for avx512. Thin on purpose: the
 // kernel body is shared; only the vector type and the compile flags (cmake/IsaFlags.cmake) differ.
 #include <cstdint>
 
 #include "kernels/kernel_table.h"
-#include "kernels/simd/vfloat_scalar.h"
+#include "kernels/simd/vfloat_avx512.h"
 
-namespace rayvec::scalar {
+namespace rayvec::avx512 {
 
 #include "kernels/moller_trumbore.inl"
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const TriangleKernels kPaper = make_kernels<vfloat, Intersector::paper>(Isa::scalar);
-constinit const TriangleKernels kMt = make_kernels<vfloat, Intersector::mt>(Isa::scalar);
-constinit const TriangleKernels kMt64 = make_kernels<vdouble, Intersector::mt64>(Isa::scalar);
+constinit const TriangleKernels kPaper = make_kernels<vfloat, Intersector::paper>(Isa::avx512);
+constinit const TriangleKernels kMt = make_kernels<vfloat, Intersector::mt>(Isa::avx512);
+constinit const TriangleKernels kMt64 = make_kernels<vdouble, Intersector::mt64>(Isa::avx512);
 }  // namespace
 
 const TriangleKernels& triangle_kernels(Intersector intersector) {
@@ -25,4 +25,4 @@ const TriangleKernels& triangle_kernels(Intersector intersector) {
   return kMt;
 }
 
-}  // namespace rayvec::scalar
+}  // namespace rayvec::avx512

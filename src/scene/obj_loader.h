@@ -1,0 +1,33 @@
+// load_obj: a Wavefront OBJ (and its MTL files) through tinyobjloader, validated.
+// obj_loader.cpp is the only file that includes tiny_obj_loader.h.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/material.h"
+#include "scene/mesh.h"
+
+namespace rayvec {
+
+struct ObjModel {
+  // Triangles in file order after triangulating polygons as tinyobjloader does; triangle id = index.
+  TriangleMesh mesh;
+  std::vector<int32_t> triangle_material;  // per triangle: index into materials, -1 = none
+  std::vector<Material> materials;         // from the MTL files, map_Kd made absolute
+  // Optional per-corner attributes: -1 where the face gives none.
+  std::vector<Vec3f> normals;
+  std::vector<std::array<int32_t, 3>> triangle_normals;
+  std::vector<std::array<float, 2>> texcoords;
+  std::vector<std::array<int32_t, 3>> triangle_texcoords;
+  std::vector<std::string> warnings;  // non-fatal problems (e.g. a missing MTL file), one per line
+};
+
+// Loads and validates `path`. Throws InputError (`file:line: what is wrong`) for a missing or
+// unreadable file, a face index out of range, a vertex coordinate that is not a finite number (the
+// loader reads `nan`/`inf` text itself, because tinyobjloader silently turns them into 0), and
+// files with no triangles.
+ObjModel load_obj(const std::string& path);
+
+}  // namespace rayvec
