@@ -4,7 +4,10 @@
 namespace rayvec {
 
 class CommandLine;
+class Command;
 
 void register_info_command(CommandLine& cli);
+// Subcommands of `rayvec bench`:
+
 
 }  // namespace rayvec
