@@ -7,6 +7,7 @@ class CommandLine;
 class Command;
 
 void register_info_command(CommandLine& cli);
+void register_compare_command(CommandLine& cli);
 // Subcommands of `rayvec bench`:
 
 

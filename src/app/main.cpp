@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
                           "rayvec: a SoA/SIMD Möller–Trumbore ray tracer.\n"
                           "Run `rayvec COMMAND --help` for each command's options and examples.");
   rayvec::register_info_command(cli);
+  rayvec::register_compare_command(cli);
   rayvec::Command& bench = cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");
   (void)bench;  // bench subcommands register on it: register_bench_<name>_command(bench)
   return cli.main(argc, argv);

@@ -1,0 +1,38 @@
+// Image files through OpenImageIO (image_io.cpp is the only file that includes it).
+//   .exr — linear float, every channel of the Image (R G B and any AOVs), plus metadata.
+//   .png — the first three channels, sRGB-encoded (IEC 61966-2-1), 8 bits, clamped to [0, 1].
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image/image.h"
+
+namespace rayvec {
+
+// Free-form key/value pairs stored in the file header (EXR attributes, PNG text chunks),
+// e.g. {"rayvec:scene", "scenes/whitted.json"}.
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
+// True for the extensions write_image accepts (".exr", ".png", any case).
+bool is_writable_image_path(const std::string& path);
+
+// Writes `image` atomically: the encoded file is assembled in memory and goes through AtomicFile
+// (temporary in the same directory, renamed on success), so a failure never leaves a partial file.
+// Throws InputError (exit 2) for an extension other than .exr/.png, RuntimeError when writing fails.
+void write_image(const std::string& path, const Image& image, const ImageMetadata& metadata = {});
+
+// Reads any format OpenImageIO knows, every channel as float as stored (8-bit PNG values become
+// v/255, still sRGB-encoded; EXR values are linear). Throws InputError for a missing or
+// unreadable file.
+Image read_image(const std::string& path);
+
+// Reads a texture as linear RGB: 8- and 16-bit files are taken as sRGB-encoded and decoded, float
+// files (EXR, HDR) as linear; grey images are widened to RGB and alpha is dropped.
+Image read_texture(const std::string& path);
+
+// sRGB transfer functions (IEC 61966-2-1).
+float srgb_encode(float linear);
+float srgb_decode(float encoded);
+
+}  // namespace rayvec
