@@ -1,0 +1,26 @@
+#include "render/camera_rays.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace rayvec {
+
+CameraRays::CameraRays(const Camera& c)
+    : eye_(c.eye),
+      forward_(normalize(c.look_at - c.eye)),
+      right_(normalize(cross(forward_, c.up))),
+      up_(cross(right_, forward_)) {
+  const float tan_half = std::tan(0.5f * c.fov_y * std::numbers::pi_v<float> / 180.0f);
+  half_w_ = 0.5f * float(c.width);
+  half_h_ = 0.5f * float(c.height);
+  scale_y_ = tan_half / half_h_;
+  scale_x_ = tan_half / half_h_;  // square pixels: the same angle per pixel both ways
+}
+
+Ray CameraRays::ray(float px, float py) const {
+  const float x = (px - half_w_) * scale_x_;
+  const float y = (half_h_ - py) * scale_y_;
+  return Ray{eye_, normalize(forward_ + right_ * x + up_ * y), 0.0f, kInf};
+}
+
+}  // namespace rayvec

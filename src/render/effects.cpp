@@ -1,0 +1,45 @@
+#include "render/effects.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace rayvec {
+namespace {
+
+float max_component(Vec3f c) { return std::max({c.x, c.y, c.z}); }
+
+std::string count(int n, const char* what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+}  // namespace
+
+bool reflects(const Material& m) { return m.illum >= 3 && m.illum <= 7 && max_component(m.Ks) > 0; }
+bool refracts(const Material& m) { return (m.illum == 6 || m.illum == 7) && max_component(m.Tf) > 0; }
+bool uses_fresnel(const Material& m) { return m.illum == 5 || m.illum == 7; }
+
+EffectsPlan plan_effects(const Scene& scene) {
+  EffectsPlan plan;
+  for (const Light& l : scene.lights)
+    if (max_component(l.power) > 0) ++plan.shadow_lights;
+  std::vector<char> used(scene.materials.size(), 0);
+  for (int32_t m : scene.triangle_material) used[m] = 1;
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    if (!used[i]) continue;
+    plan.reflective_materials += reflects(scene.materials[i]);
+    plan.refractive_materials += refracts(scene.materials[i]);
+  }
+  return plan;
+}
+
+std::string EffectsPlan::describe() const {
+  std::string s = "effects: shadows";
+  s += shadow_lights ? " (" + count(shadow_lights, "light") + ")" : ": none";
+  s += ", reflection";
+  s += reflective_materials ? " (" + count(reflective_materials, "material") + ")" : ": none";
+  s += ", refraction";
+  s += refractive_materials ? " (" + count(refractive_materials, "material") + ")" : ": none";
+  return s;
+}
+
+}  // namespace rayvec

@@ -1,0 +1,56 @@
+#include "render/surface_point.h"
+
+#include <cmath>
+
+namespace rayvec {
+
+SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
+  const std::size_t t = static_cast<std::size_t>(hit.tri);
+  const Vec3f v0 = scene.mesh.vertex(t, 0), e1 = scene.mesh.vertex(t, 1) - v0,
+              e2 = scene.mesh.vertex(t, 2) - v0;
+  SurfacePoint s;
+  s.p = v0 + e1 * hit.u + e2 * hit.v;
+  s.ng = normalize(cross(e1, e2));
+  s.entering = dot(s.ng, ray.dir) < 0;
+  if (!s.entering) s.ng = -s.ng;
+  s.ns = s.ng;
+  if (scene.has_normals[t]) {
+    const auto& n = scene.corner_normals[t];
+    const float w = 1.0f - hit.u - hit.v;
+    const Vec3f ns = n[0] * w + n[1] * hit.u + n[2] * hit.v;
+    if (length(ns) > 0) {
+      s.ns = normalize(ns);
+      if (dot(s.ns, s.ng) < 0) s.ns = -s.ns;
+    }
+  }
+  if (scene.has_uv[t]) {
+    const auto& uv = scene.corner_uv[t];
+    const float w = 1.0f - hit.u - hit.v;
+    s.u = uv[0][0] * w + uv[1][0] * hit.u + uv[2][0] * hit.v;
+    s.v = uv[0][1] * w + uv[1][1] * hit.u + uv[2][1] * hit.v;
+  }
+  s.material = scene.triangle_material[t];
+  return s;
+}
+
+Vec3f diffuse_albedo(const Scene& scene, const SurfacePoint& s) {
+  const Material& m = scene.materials[s.material];
+  const int32_t tex = scene.material_texture[s.material];
+  if (tex < 0) return m.Kd;
+  const Image& img = scene.textures[tex];
+  // OBJ texture space has v up; image row 0 is the top.
+  const float fx = (s.u - std::floor(s.u)) * float(img.width) - 0.5f;
+  const float fy = (1.0f - (s.v - std::floor(s.v))) * float(img.height) - 0.5f;
+  const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+  const float ax = fx - float(x0), ay = fy - float(y0);
+  auto texel = [&](int x, int y) {
+    x = ((x % img.width) + img.width) % img.width;
+    y = ((y % img.height) + img.height) % img.height;
+    return Vec3f{img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2)};
+  };
+  const Vec3f top = texel(x0, y0) * (1 - ax) + texel(x0 + 1, y0) * ax;
+  const Vec3f bottom = texel(x0, y0 + 1) * (1 - ax) + texel(x0 + 1, y0 + 1) * ax;
+  return m.Kd * (top * (1 - ay) + bottom * ay);
+}
+
+}  // namespace rayvec

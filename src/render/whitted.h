@@ -1,0 +1,38 @@
+// Whitted (1980) recursive ray tracing: local lighting (Lambert + Blinn–Phong under point and
+// directional lights, with shadow rays), perfect reflection and refraction, with the adaptive depth
+// control of Hall & Greenberg (1983): each ray carries the weight it contributes to the pixel, and a
+// child whose weight falls below `min_contribution` is not traced.
+#pragma once
+#include "accel/accelerator.h"
+#include "render/render_stats.h"
+#include "render/surface_point.h"
+#include "scene/scene.h"
+
+namespace rayvec {
+
+struct WhittedSettings {
+  int max_depth = 8;               // a primary ray is depth 0; children exist up to this depth
+  float min_contribution = 0.01f;  // smallest weight (max RGB component) worth tracing
+};
+
+class Whitted {
+ public:
+  Whitted(const Scene& scene, const Accelerator& accel, WhittedSettings settings)
+      : scene_(scene), accel_(accel), settings_(settings) {}
+
+  // Radiance arriving along `ray` whose nearest hit is `hit` (already traced). `weight` is the
+  // ray's contribution to its pixel (1 for primary rays). Counts the rays it spawns in `rays`.
+  Vec3f shade(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const;
+
+ private:
+  Vec3f trace(const Ray& ray, int depth, float weight, RayCounts& rays) const;
+  Vec3f direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye,
+                     RayCounts& rays) const;
+  bool child_worthwhile(int depth, float weight) const;
+
+  const Scene& scene_;
+  const Accelerator& accel_;
+  WhittedSettings settings_;
+};
+
+}  // namespace rayvec

@@ -1,0 +1,132 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "image/image_io.h"
+#include "scene/obj_loader.h"
+
+namespace rayvec {
+
+void MaterialOverride::apply(Material& m) const {
+  if (Ka) m.Ka = *Ka;
+  if (Kd) m.Kd = *Kd;
+  if (Ks) m.Ks = *Ks;
+  if (Ke) m.Ke = *Ke;
+  if (Tf) m.Tf = *Tf;
+  if (Ns) m.Ns = *Ns;
+  if (Ni) m.Ni = *Ni;
+  if (d) m.d = *d;
+  if (illum) m.illum = *illum;
+  if (map_Kd) m.map_Kd = *map_Kd;
+}
+
+int32_t Scene::add_material(const Material& m) {
+  materials.push_back(m);
+  int32_t texture = -1;
+  if (!m.map_Kd.empty()) {
+    // One texture per distinct file, shared by every material that names it.
+    for (std::size_t i = 0; i < materials.size() - 1; ++i)
+      if (materials[i].map_Kd == m.map_Kd) texture = material_texture[i];
+    if (texture < 0) {
+      textures.push_back(read_texture(m.map_Kd));
+      texture = static_cast<int32_t>(textures.size() - 1);
+    }
+  }
+  material_texture.push_back(texture);
+  return static_cast<int32_t>(materials.size() - 1);
+}
+
+void Scene::add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material) {
+  mesh.add_triangle(a, b, c);
+  triangle_material.push_back(material);
+  triangle_object.push_back(static_cast<int32_t>(object_count_));
+  corner_normals.push_back({});
+  corner_uv.push_back({});
+  has_normals.push_back(0);
+  has_uv.push_back(0);
+}
+
+void Scene::add_object(const ObjModel& model, const Transform& transform,
+                       const MaterialOverride& override) {
+  const AffineMap map(transform);
+  const auto first_material = static_cast<int32_t>(materials.size());
+  for (Material m : model.materials) {
+    override.apply(m);
+    add_material(m);
+  }
+  int32_t fallback = -1;  // the MTL default, for triangles the OBJ gives no material
+  const std::size_t first_tri = mesh.size();
+  for (std::size_t t = 0; t < model.mesh.size(); ++t) {
+    int32_t material = t < model.triangle_material.size() ? model.triangle_material[t] : -1;
+    if (material >= 0 && material < int32_t(model.materials.size())) {
+      material += first_material;
+    } else {
+      if (fallback < 0) {
+        Material m;
+        override.apply(m);
+        fallback = add_material(m);
+      }
+      material = fallback;
+    }
+    // A mirroring transform reverses winding; swap two corners so normals stay outward.
+    const int c1 = map.flips_orientation() ? 2 : 1, c2 = map.flips_orientation() ? 1 : 2;
+    const int corner[3] = {0, c1, c2};
+    add_triangle(map.point(model.mesh.vertex(t, 0)), map.point(model.mesh.vertex(t, c1)),
+                 map.point(model.mesh.vertex(t, c2)), material);
+    const std::size_t tri = first_tri + t;
+    if (t < model.triangle_normals.size()) {
+      const auto& idx = model.triangle_normals[t];
+      if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0) {
+        for (int k = 0; k < 3; ++k)
+          corner_normals[tri][k] = map.normal(model.normals[idx[corner[k]]]);
+        has_normals[tri] = 1;
+      }
+    }
+    if (t < model.triangle_texcoords.size()) {
+      const auto& idx = model.triangle_texcoords[t];
+      if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0) {
+        for (int k = 0; k < 3; ++k) corner_uv[tri][k] = model.texcoords[idx[corner[k]]];
+        has_uv[tri] = 1;
+      }
+    }
+  }
+  warnings.insert(warnings.end(), model.warnings.begin(), model.warnings.end());
+  ++object_count_;
+}
+
+std::pair<Vec3f, Vec3f> Scene::bounds() const {
+  if (mesh.positions.empty()) return {{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}};
+  Vec3f lo = mesh.positions[0], hi = lo;
+  for (const Vec3f& p : mesh.positions) {
+    lo = min(lo, p);
+    hi = max(hi, p);
+  }
+  return {lo, hi};
+}
+
+void frame_bounding_box(Scene& scene) {
+  const auto [lo, hi] = scene.bounds();
+  const Vec3f centre = (lo + hi) * 0.5f;
+  const float radius = std::max(0.5f * length(hi - lo), 1e-30f);
+  Camera& cam = scene.camera;
+  const float half_fov = 0.5f * cam.fov_y * std::numbers::pi_v<float> / 180.0f;
+  // Distance at which the bounding sphere fits the narrower field of view, plus a margin.
+  const float aspect = float(cam.width) / float(cam.height);
+  const float half_narrow = aspect < 1 ? std::atan(std::tan(half_fov) * aspect) : half_fov;
+  const float distance = 1.1f * radius / std::sin(half_narrow);
+  const Vec3f view = normalize(Vec3f{0.0f, 0.35f, 1.0f});  // from slightly above, along +z
+  cam.look_at = centre;
+  cam.eye = centre + view * distance;
+  cam.up = {0, 1, 0};
+  // One light at the eye with I/r² = π at the bounding sphere's near side, so a Lambertian surface
+  // there facing the camera reads about Kd (Kd/π · π).
+  const float near = std::max(distance - radius, 1e-30f);
+  const float intensity = std::numbers::pi_v<float> * near * near;
+  scene.lights = {Light{Light::Type::point, cam.eye, {0, -1, 0}, Vec3f{1, 1, 1} * intensity}};
+  scene.ambient = {0.05f, 0.05f, 0.05f};
+  scene.background = {0.0f, 0.0f, 0.0f};
+}
+
+}  // namespace rayvec

@@ -1,0 +1,107 @@
+// Scene: everything a render needs — camera, lights, one flattened triangle mesh with per-triangle
+// materials, objects and shading attributes, and the render settings. Built from a JSON scene file
+// (scene_json.cpp) or a bare OBJ (load_scene), or in code by tests.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image/image.h"
+#include "scene/material.h"
+#include "scene/mesh.h"
+#include "scene/transform.h"
+
+namespace rayvec {
+
+struct ObjModel;
+
+// A pinhole camera. Image right = cross(forward, up), image up completes the frame; row 0 is the
+// top row. fov_y is the full vertical field of view in degrees.
+struct Camera {
+  Vec3f eye{0, 0, 5};
+  Vec3f look_at{0, 0, 0};
+  Vec3f up{0, 1, 0};
+  float fov_y = 45.0f;
+  int width = 640;
+  int height = 480;
+};
+
+// Point lights: `intensity` I in W/sr, irradiance I·cosθ/r² at distance r.
+// Directional lights: `irradiance` E at normal incidence, travelling along `direction`
+// (from the light into the scene), irradiance E·cosθ.
+struct Light {
+  enum class Type { point, directional } type = Type::point;
+  Vec3f position{0, 0, 0};
+  Vec3f direction{0, -1, 0};  // normalized by the loader
+  Vec3f power{1, 1, 1};       // intensity (point) or irradiance (directional)
+};
+
+struct RenderSettings {
+  int max_depth = 8;               // hard cap on reflection/refraction generations
+  float min_contribution = 0.01f;  // Hall & Greenberg (1983): skip children weighing less
+  int spp = 1;                     // samples per pixel (stratified)
+  std::string intersector;         // "" = the command line's default
+};
+
+// Values a scene file sets over an object's MTL materials (same names as MTL); unset = keep.
+struct MaterialOverride {
+  std::optional<Vec3f> Ka, Kd, Ks, Ke, Tf;
+  std::optional<float> Ns, Ni, d;
+  std::optional<int> illum;
+  std::optional<std::string> map_Kd;  // absolute path
+
+  void apply(Material& m) const;
+};
+
+struct Scene {
+  std::string source;  // the file it came from (for messages and image metadata)
+  Camera camera;
+  Vec3f background{0, 0, 0};
+  Vec3f ambient{0, 0, 0};
+  std::vector<Light> lights;
+  RenderSettings render;
+
+  TriangleMesh mesh;                        // every object, world space; triangle id = index
+  std::vector<int32_t> triangle_material;   // per triangle, index into materials (always valid)
+  std::vector<int32_t> triangle_object;     // per triangle, index of the object it came from
+  std::vector<Material> materials;
+  std::vector<int32_t> material_texture;    // per material, index into textures or -1
+  std::vector<Image> textures;              // linear RGB (map_Kd)
+  // Per-triangle corner attributes; has_normals/has_uv false where the OBJ gives none.
+  std::vector<std::array<Vec3f, 3>> corner_normals;
+  std::vector<std::array<std::array<float, 2>, 3>> corner_uv;
+  std::vector<uint8_t> has_normals, has_uv;
+  std::vector<std::string> warnings;
+
+  std::size_t object_count() const { return object_count_; }
+
+  // Appends a model's triangles (transformed to world space) and its materials with `override`
+  // applied (triangles without a material get the MTL default material, overridden too) as one
+  // new object; map_Kd textures are read (InputError when unreadable).
+  void add_object(const ObjModel& model, const Transform& transform,
+                  const MaterialOverride& override = {});
+  // Appends one triangle with material `material` (index) — for scenes built in code.
+  void add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material);
+  int32_t add_material(const Material& m);
+
+  // World-space bounds of the mesh (empty scene: a unit box at the origin).
+  std::pair<Vec3f, Vec3f> bounds() const;
+
+ private:
+  std::size_t object_count_ = 0;
+};
+
+// Frames the mesh's bounding box: the camera looks at its centre from the +z side (slightly above),
+// far enough for the bounding sphere to fit fov_y, and one point light sits at the eye, bright
+// enough for the nearest surfaces to read about 1. For `rayvec render MODEL.obj`.
+void frame_bounding_box(Scene& scene);
+
+// Loads `path`: a JSON scene (.json) or a bare Wavefront OBJ (.obj, framed by frame_bounding_box).
+// Throws InputError (exit 2) naming the file and the problem.
+Scene load_scene(const std::string& path);
+Scene load_scene_json(const std::string& path);
+
+}  // namespace rayvec

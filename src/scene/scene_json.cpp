@@ -1,0 +1,248 @@
+// JSON scene files (docs/scenes.md lists every key). The only file that includes nlohmann/json.
+// Unknown keys are errors naming the key: a typo such as "fov" for "fov_y" must not pass silently.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+
+#include "io/input_error.h"
+#include "scene/obj_loader.h"
+#include "scene/scene.h"
+
+namespace rayvec {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// Reads one JSON object with a dotted path ("lights[1].position") for messages.
+class Reader {
+ public:
+  Reader(const std::string& file, const std::string& text) : file_(file), text_(text) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    // nlohmann keeps no positions; the first line that mentions the key is close enough.
+    const std::string key = where.substr(where.find_last_of(".]") + 1);
+    throw InputError(file_, line_of(key), where + ": " + what);
+  }
+
+  // Rejects any key of `object` not in `allowed`.
+  void keys(const json& object, const std::string& where,
+            std::initializer_list<const char*> allowed) const {
+    if (!object.is_object()) fail(where, "expected an object {...}");
+    for (const auto& [key, value] : object.items()) {
+      bool known = false;
+      std::string list;
+      for (const char* a : allowed) {
+        known = known || key == a;
+        list += std::string(list.empty() ? "" : ", ") + a;
+      }
+      if (!known)
+        throw InputError(file_, line_of(key),
+                         "unknown key '" + join(where, key) + "' (allowed here: " + list + ")");
+    }
+  }
+
+  float number(const json& v, const std::string& where) const {
+    if (!v.is_number()) fail(where, "expected a number, got " + std::string(v.type_name()));
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || std::fabs(d) > 3.0e38) fail(where, "number out of range");
+    return static_cast<float>(d);
+  }
+  int integer(const json& v, const std::string& where, int lo, int hi) const {
+    if (!v.is_number_integer() && !v.is_number_unsigned())
+      fail(where, "expected an integer, got " + std::string(v.type_name()));
+    const long long i = v.get<long long>();
+    if (i < lo || i > hi)
+      fail(where, "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+    return static_cast<int>(i);
+  }
+  Vec3f vec3(const json& v, const std::string& where) const {
+    if (!v.is_array() || v.size() != 3) fail(where, "expected an array of 3 numbers [x, y, z]");
+    return {number(v[0], where + "[0]"), number(v[1], where + "[1]"), number(v[2], where + "[2]")};
+  }
+  Vec3f colour(const json& v, const std::string& where) const {
+    const Vec3f c = vec3(v, where);
+    if (c.x < 0 || c.y < 0 || c.z < 0) fail(where, "colour components must be >= 0");
+    return c;
+  }
+  std::string string(const json& v, const std::string& where) const {
+    if (!v.is_string()) fail(where, "expected a string, got " + std::string(v.type_name()));
+    return v.get<std::string>();
+  }
+  // A path relative to the scene file's directory.
+  std::string path(const json& v, const std::string& where) const {
+    const fs::path p = string(v, where);
+    return (p.is_absolute() ? p : fs::path(file_).parent_path() / p).lexically_normal().string();
+  }
+  const std::string& file() const { return file_; }
+
+  static std::string join(const std::string& where, const std::string& key) {
+    return where.empty() ? key : where + "." + key;
+  }
+
+ private:
+  std::size_t line_of(const std::string& key) const {
+    const std::size_t at = text_.find("\"" + key + "\"");
+    if (at == std::string::npos) return 0;
+    return 1 + static_cast<std::size_t>(std::count(text_.begin(), text_.begin() + at, '\n'));
+  }
+  std::string file_, text_;
+};
+
+Camera read_camera(const Reader& r, const json& j) {
+  r.keys(j, "camera", {"eye", "look_at", "up", "fov_y", "width", "height"});
+  Camera c;
+  if (j.contains("eye")) c.eye = r.vec3(j["eye"], "camera.eye");
+  if (j.contains("look_at")) c.look_at = r.vec3(j["look_at"], "camera.look_at");
+  if (j.contains("up")) c.up = r.vec3(j["up"], "camera.up");
+  if (j.contains("fov_y")) c.fov_y = r.number(j["fov_y"], "camera.fov_y");
+  if (j.contains("width")) c.width = r.integer(j["width"], "camera.width", 1, 16384);
+  if (j.contains("height")) c.height = r.integer(j["height"], "camera.height", 1, 16384);
+  if (!(c.fov_y > 0 && c.fov_y < 180)) r.fail("camera.fov_y", "must be between 0 and 180 degrees");
+  const Vec3f forward = c.look_at - c.eye;
+  if (!(length(forward) > 0)) r.fail("camera.look_at", "must differ from camera.eye");
+  if (!(length(cross(normalize(forward), c.up)) > 1e-6f))
+    r.fail("camera.up", "must not be zero or parallel to the view direction");
+  return c;
+}
+
+Light read_light(const Reader& r, const json& j, const std::string& where) {
+  r.keys(j, where, {"type", "position", "intensity", "direction", "irradiance"});
+  if (!j.contains("type")) r.fail(where + ".type", "missing (\"point\" or \"directional\")");
+  const std::string type = r.string(j["type"], where + ".type");
+  Light light;
+  if (type == "point") {
+    for (const char* k : {"direction", "irradiance"})
+      if (j.contains(k)) r.fail(Reader::join(where, k), "belongs to directional lights");
+    if (!j.contains("position")) r.fail(where + ".position", "missing");
+    light.position = r.vec3(j["position"], where + ".position");
+    if (j.contains("intensity")) light.power = r.colour(j["intensity"], where + ".intensity");
+  } else if (type == "directional") {
+    light.type = Light::Type::directional;
+    for (const char* k : {"position", "intensity"})
+      if (j.contains(k)) r.fail(Reader::join(where, k), "belongs to point lights");
+    if (!j.contains("direction")) r.fail(where + ".direction", "missing");
+    const Vec3f d = r.vec3(j["direction"], where + ".direction");
+    if (!(length(d) > 0)) r.fail(where + ".direction", "must not be zero");
+    light.direction = normalize(d);
+    if (j.contains("irradiance")) light.power = r.colour(j["irradiance"], where + ".irradiance");
+  } else {
+    r.fail(where + ".type", "unknown light type '" + type + "' (choose point or directional)");
+  }
+  return light;
+}
+
+Transform read_transform(const Reader& r, const json& j, const std::string& where) {
+  r.keys(j, where, {"scale", "rotate_deg", "translate"});
+  Transform t;
+  if (j.contains("scale")) {
+    const json& s = j["scale"];
+    t.scale = s.is_number() ? Vec3f{1, 1, 1} * r.number(s, where + ".scale")
+                            : r.vec3(s, where + ".scale");
+    if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) r.fail(where + ".scale", "must not be 0");
+  }
+  if (j.contains("rotate_deg")) t.rotate_deg = r.vec3(j["rotate_deg"], where + ".rotate_deg");
+  if (j.contains("translate")) t.translate = r.vec3(j["translate"], where + ".translate");
+  return t;
+}
+
+MaterialOverride read_material(const Reader& r, const json& j, const std::string& where) {
+  r.keys(j, where, {"Ka", "Kd", "Ks", "Ke", "Tf", "Ns", "Ni", "d", "illum", "map_Kd"});
+  MaterialOverride m;
+  auto col = [&](const char* k, std::optional<Vec3f>& out) {
+    if (j.contains(k)) out = r.colour(j[k], Reader::join(where, k));
+  };
+  col("Ka", m.Ka); col("Kd", m.Kd); col("Ks", m.Ks); col("Ke", m.Ke); col("Tf", m.Tf);
+  if (j.contains("Ns")) m.Ns = r.number(j["Ns"], where + ".Ns");
+  if (j.contains("Ni")) m.Ni = r.number(j["Ni"], where + ".Ni");
+  if (j.contains("d")) m.d = r.number(j["d"], where + ".d");
+  if (j.contains("illum")) m.illum = r.integer(j["illum"], where + ".illum", 0, 10);
+  if (j.contains("map_Kd")) m.map_Kd = r.path(j["map_Kd"], where + ".map_Kd");
+  if (m.Ns && *m.Ns < 0) r.fail(where + ".Ns", "must be >= 0");
+  if (m.Ni && !(*m.Ni > 0)) r.fail(where + ".Ni", "must be > 0");
+  if (m.d && !(*m.d >= 0 && *m.d <= 1)) r.fail(where + ".d", "must be between 0 and 1");
+  return m;
+}
+
+RenderSettings read_render(const Reader& r, const json& j) {
+  r.keys(j, "render", {"max_depth", "min_contribution", "spp", "intersector"});
+  RenderSettings s;
+  if (j.contains("max_depth")) s.max_depth = r.integer(j["max_depth"], "render.max_depth", 0, 64);
+  if (j.contains("min_contribution")) {
+    s.min_contribution = r.number(j["min_contribution"], "render.min_contribution");
+    if (!(s.min_contribution >= 0 && s.min_contribution <= 1))
+      r.fail("render.min_contribution", "must be between 0 and 1");
+  }
+  if (j.contains("spp")) s.spp = r.integer(j["spp"], "render.spp", 1, 4096);
+  if (j.contains("intersector")) s.intersector = r.string(j["intersector"], "render.intersector");
+  return s;
+}
+
+}  // namespace
+
+Scene load_scene_json(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open scene file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    const std::size_t byte = std::min<std::size_t>(e.byte, text.size());
+    const auto line = 1 + std::count(text.begin(), text.begin() + byte, '\n');
+    std::string what = e.what();
+    what = what.substr(what.find(':') != std::string::npos ? what.rfind(':') + 2 : 0);
+    throw InputError(path, std::size_t(line), "invalid JSON: " + what);
+  }
+  const Reader r(path, text);
+  r.keys(root, "", {"camera", "background", "ambient", "lights", "objects", "render", "comment"});
+
+  Scene scene;
+  scene.source = path;
+  if (root.contains("camera")) scene.camera = read_camera(r, root["camera"]);
+  if (root.contains("background")) scene.background = r.colour(root["background"], "background");
+  if (root.contains("ambient")) scene.ambient = r.colour(root["ambient"], "ambient");
+  if (root.contains("render")) scene.render = read_render(r, root["render"]);
+  if (root.contains("lights")) {
+    if (!root["lights"].is_array()) r.fail("lights", "expected an array of lights");
+    for (std::size_t i = 0; i < root["lights"].size(); ++i)
+      scene.lights.push_back(read_light(r, root["lights"][i], "lights[" + std::to_string(i) + "]"));
+  }
+  if (!root.contains("objects") || !root["objects"].is_array() || root["objects"].empty())
+    r.fail("objects", "expected a non-empty array of objects ({\"obj\": \"file.obj\"})");
+  for (std::size_t i = 0; i < root["objects"].size(); ++i) {
+    const std::string where = "objects[" + std::to_string(i) + "]";
+    const json& o = root["objects"][i];
+    r.keys(o, where, {"obj", "transform", "material"});
+    if (!o.contains("obj")) r.fail(where + ".obj", "missing (path of a Wavefront OBJ file)");
+    const std::string obj = r.path(o["obj"], where + ".obj");
+    const Transform t = o.contains("transform") ? read_transform(r, o["transform"], where + ".transform")
+                                                : Transform{};
+    const MaterialOverride m = o.contains("material") ? read_material(r, o["material"], where + ".material")
+                                                      : MaterialOverride{};
+    scene.add_object(load_obj(obj), t, m);
+  }
+  return scene;
+}
+
+Scene load_scene(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".json") return load_scene_json(path);
+  if (ext == ".obj") {
+    Scene scene;
+    scene.source = path;
+    scene.add_object(load_obj(path), Transform{});
+    frame_bounding_box(scene);
+    return scene;
+  }
+  throw InputError(path, 0, "unknown scene type '" + ext + "' (give a .json scene or an .obj model)");
+}
+
+}  // namespace rayvec

@@ -1,0 +1,82 @@
+// Secondary rays leave their surface: at every scale from 1e-4 to 1e5, rays spawned from hit points
+// with offset_ray_origin (Wächter & Binder 2019) never hit the triangle they start on — no epsilon
+// tuned per scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "accel/accelerator.h"
+#include "render/offset_ray.h"
+#include "scene/mesh.h"
+
+namespace rayvec {
+namespace {
+
+Vec3f random_unit(std::mt19937& rng) {
+  std::normal_distribution<float> g;
+  for (;;) {
+    const Vec3f v{g(rng), g(rng), g(rng)};
+    if (length(v) > 1e-3f) return normalize(v);
+  }
+}
+
+// Random triangles of size ~scale placed ~scale·3 from the origin (so coordinates have the
+// scale's magnitude) and also straddling the origin.
+TriangleMesh random_triangles(std::mt19937& rng, float scale, int n) {
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  TriangleMesh mesh;
+  for (int i = 0; i < n; ++i) {
+    const Vec3f centre = Vec3f{u(rng), u(rng), u(rng)} * (i % 2 ? 3.0f * scale : 0.2f * scale);
+    mesh.add_triangle(centre + Vec3f{u(rng), u(rng), u(rng)} * scale,
+                      centre + Vec3f{u(rng), u(rng), u(rng)} * scale,
+                      centre + Vec3f{u(rng), u(rng), u(rng)} * scale);
+  }
+  return mesh;
+}
+
+TEST(OffsetRay, SpawnedRaysNeverReHitTheirSurfaceAtAnyScale) {
+  for (float scale : {1e-4f, 1e-2f, 1.0f, 1e2f, 1e5f}) {
+    std::mt19937 rng(42);
+    const TriangleMesh mesh = random_triangles(rng, scale, 64);
+    for (Intersector is : {Intersector::mt, Intersector::mt64}) {
+      const auto accel = make_accelerator(AccelKind::brute, mesh, TraceConfig{Isa::scalar, is});
+      int tested = 0, rehits = 0;
+      std::uniform_real_distribution<float> bary(0.0f, 1.0f);
+      for (std::size_t t = 0; t < mesh.size(); ++t) {
+        const Vec3f v0 = mesh.vertex(t, 0), e1 = mesh.vertex(t, 1) - v0, e2 = mesh.vertex(t, 2) - v0;
+        const Vec3f n = normalize(cross(e1, e2));
+        for (int k = 0; k < 64; ++k) {
+          float a = bary(rng), b = bary(rng);
+          if (a + b > 1) { a = 1 - a; b = 1 - b; }
+          const Vec3f p = v0 + e1 * a + e2 * b;
+          // Leave on either side, as reflection (same side) and refraction (other side) rays do.
+          const Vec3f side = (k % 2) ? n : -n;
+          Vec3f dir = random_unit(rng);
+          if (dot(dir, side) < 0) dir = -dir;
+          if (dot(dir, side) < 1e-3f) continue;  // grazing: skip degenerate directions
+          const Hit h = accel->closest(Ray{offset_ray_origin(p, side), dir, 0.0f, kInf});
+          ++tested;
+          if (h.tri == static_cast<int32_t>(t)) ++rehits;
+        }
+      }
+      EXPECT_GT(tested, 3000);
+      EXPECT_EQ(rehits, 0) << "scale " << scale << " " << intersector_name(is);
+    }
+  }
+}
+
+TEST(OffsetRay, OffsetIsSmallRelativeToTheCoordinate) {
+  for (float c : {1e-4f, 0.5f, 1.0f, 1e3f, 1e5f, -7e4f}) {
+    const Vec3f p{c, -c, c};
+    const Vec3f n = normalize(Vec3f{1, 1, 1});
+    const Vec3f o = offset_ray_origin(p, n);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_GT(o[i], p[i]) << c;  // moves along the normal
+      EXPECT_LT(std::fabs(o[i] - p[i]), std::max(1e-4f * std::fabs(p[i]), 1e-4f)) << c;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rayvec
