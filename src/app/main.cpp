@@ -24,8 +24,12 @@ int main(int argc, char** argv) {
                           "rayvec: a SoA/SIMD Möller–Trumbore ray tracer.\n"
                           "Run `rayvec COMMAND --help` for each command's options and examples.");
   rayvec::register_info_command(cli);
+  rayvec::register_hits_command(cli);
+  rayvec::register_visibility_command(cli);
   rayvec::register_compare_command(cli);
+  rayvec::register_render_command(cli);
   rayvec::Command& bench = cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");
-  (void)bench;  // bench subcommands register on it: register_bench_<name>_command(bench)
+  // bench subcommands register on it: register_bench_<name>_command(bench)
+  rayvec::register_bench_paper_command(bench);
   return cli.main(argc, argv);
 }

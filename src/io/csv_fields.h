@@ -1,0 +1,48 @@
+// Small pieces shared by rayvec's CSV readers (rays, verts, faces): the whole file in memory, line
+// iteration with line numbers, and strict number fields through std::from_chars. Every failure is an
+// InputError `file:line: what is wrong`.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace rayvec {
+
+// The whole file as bytes. Throws InputError(`path: cannot read: <reason>`) when it cannot be opened
+// or read (missing file, a directory, no permission).
+std::string read_text_file(const std::string& path);
+
+// Walks `text` line by line. Accepts LF and CRLF line ends and a last line without one.
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text) : text_(text) {}
+  // The next line without its line end; false at the end of the text.
+  bool next(std::string_view& line);
+  std::size_t line_number() const { return line_; }  // 1-based number of the line last returned
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0, line_ = 0;
+};
+
+// True for a line with only spaces/tabs, or whose first non-blank character is '#'.
+bool is_blank_or_comment(std::string_view line);
+
+// Number of comma-separated fields in `line` (commas + 1).
+std::size_t count_fields(std::string_view line);
+
+// Where the error messages point: the file and the line being parsed.
+struct CsvPlace {
+  const std::string& file;
+  std::size_t line;
+};
+
+// Parses the comma-separated fields of `line` into out[0..n) (n must equal count_fields(line)).
+// Spaces and tabs around a field are ignored; a leading '+' is accepted; `nan`, `inf`, `infinity`
+// (any case, optional sign) give non-finite values, which the caller judges. A field that is empty
+// or not entirely a number throws `file:line: field K 'text' is not a number`; a finite number too
+// large for the type throws `... is out of range`. Underflow gives 0 or a subnormal.
+void parse_fields(std::string_view line, float* out, std::size_t n, const CsvPlace& where);
+void parse_fields(std::string_view line, double* out, std::size_t n, const CsvPlace& where);
+
+}  // namespace rayvec

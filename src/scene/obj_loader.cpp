@@ -1,0 +1,141 @@
+// The only file that includes tiny_obj_loader.h (Debian's libtinyobjloader: header + shared
+// library, so no TINYOBJLOADER_IMPLEMENTATION here). tinyobjloader parses and triangulates; rayvec
+// validates first (obj_scan.cpp) because tinyobjloader turns `nan` into 0 and drops bad faces quietly.
+#include "scene/obj_loader.h"
+
+#include <tiny_obj_loader.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/csv_fields.h"
+#include "io/input_error.h"
+#include "scene/obj_scan.h"
+
+namespace rayvec {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Reads `mtllib` files relative to the OBJ's directory and remembers each material's MTL directory,
+// since map_Kd paths are relative to the MTL file, not to the OBJ.
+class MtlReader : public tinyobj::MaterialReader {
+ public:
+  explicit MtlReader(fs::path obj_dir) : obj_dir_(std::move(obj_dir)) {}
+
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* by_name, std::string* warn,
+                  std::string* err) override {
+    const fs::path mtl = obj_dir_ / name;
+    std::ifstream in(mtl);
+    if (!in) {
+      if (warn) *warn += "material file " + mtl.string() + " not found; using default materials\n";
+      return false;
+    }
+    tinyobj::LoadMtl(by_name, materials, &in, warn, err);
+    material_dirs.resize(materials->size(), mtl.parent_path());
+    return true;
+  }
+
+  std::vector<fs::path> material_dirs;  // per material: the directory of its MTL file
+
+ private:
+  fs::path obj_dir_;
+};
+
+Vec3f vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
+
+Material convert(const tinyobj::material_t& m, const fs::path& mtl_dir,
+                 std::vector<std::string>& warnings) {
+  Material out;
+  out.name = m.name;
+  out.Ka = vec3(m.ambient);
+  out.Kd = vec3(m.diffuse);
+  out.Ks = vec3(m.specular);
+  out.Ke = vec3(m.emission);
+  out.Tf = vec3(m.transmittance);
+  out.Ns = m.shininess;
+  out.Ni = m.ior;
+  out.d = m.dissolve;
+  out.illum = m.illum;
+  if (!m.diffuse_texname.empty()) {
+    out.map_Kd = fs::absolute(mtl_dir / m.diffuse_texname).lexically_normal().string();
+    if (!fs::exists(out.map_Kd))
+      warnings.push_back("material '" + m.name + "': texture " + out.map_Kd + " not found");
+  }
+  return out;
+}
+
+void split_warnings(const std::string& text, const std::string& path,
+                    std::vector<std::string>& warnings) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line != ".") warnings.push_back(path + ": " + line);
+}
+
+}  // namespace
+
+ObjModel load_obj(const std::string& path) {
+  const std::string text = read_text_file(path);
+  check_obj_text(text, path);
+
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warn, err;
+  std::istringstream in(text);
+  MtlReader mtl_reader(fs::path(path).parent_path());
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, true))
+    throw InputError(path, 0, "cannot parse: " + err);
+
+  ObjModel model;
+  split_warnings(warn, path, model.warnings);
+  if (!err.empty()) split_warnings(err, path, model.warnings);  // e.g. MTL problems on success
+  mtl_reader.material_dirs.resize(materials.size(), fs::path(path).parent_path());
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    model.materials.push_back(convert(materials[i], mtl_reader.material_dirs[i], model.warnings));
+
+  const auto nv = static_cast<int>(attrib.vertices.size() / 3);
+  const auto nn = static_cast<int>(attrib.normals.size() / 3);
+  const auto nt = static_cast<int>(attrib.texcoords.size() / 2);
+  model.mesh.positions.reserve(static_cast<std::size_t>(nv));
+  for (int i = 0; i < nv; ++i) model.mesh.positions.push_back(vec3(&attrib.vertices[3 * i]));
+  for (int i = 0; i < nn; ++i) model.normals.push_back(vec3(&attrib.normals[3 * i]));
+  for (int i = 0; i < nt; ++i)
+    model.texcoords.push_back({attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]});
+
+  // Shapes come out in file order (a new shape at each `o`, `g` or material change), so their
+  // concatenation numbers the triangles in file order.
+  for (const tinyobj::shape_t& shape : shapes) {
+    const auto& idx = shape.mesh.indices;
+    std::size_t first = 0;  // index of the face's first corner
+    for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+      if (shape.mesh.num_face_vertices[f] != 3 || first + 3 > idx.size())
+        throw InputError(path, 0, "tinyobjloader returned a face that is not a triangle");
+      std::array<uint32_t, 3> tri{};
+      std::array<int32_t, 3> tri_n{-1, -1, -1}, tri_t{-1, -1, -1};
+      for (int k = 0; k < 3; ++k) {
+        const tinyobj::index_t& c = idx[first + k];
+        // obj_scan.cpp has checked every index with its line; this guards against surprises.
+        if (c.vertex_index < 0 || c.vertex_index >= nv)
+          throw InputError(path, 0, "face vertex index out of range after triangulation");
+        tri[k] = static_cast<uint32_t>(c.vertex_index);
+        if (c.normal_index >= 0 && c.normal_index < nn) tri_n[k] = c.normal_index;
+        if (c.texcoord_index >= 0 && c.texcoord_index < nt) tri_t[k] = c.texcoord_index;
+      }
+      first += 3;
+      model.mesh.triangles.push_back(tri);
+      model.triangle_normals.push_back(tri_n);
+      model.triangle_texcoords.push_back(tri_t);
+      const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+      model.triangle_material.push_back(
+          material >= 0 && material < static_cast<int>(materials.size()) ? material : -1);
+    }
+  }
+  if (model.mesh.triangles.empty())
+    throw InputError(path, 0, "no triangles (the file has no `f` face with 3 or more corners)");
+  return model;
+}
+
+}  // namespace rayvec

@@ -1,0 +1,128 @@
+#include "scene/obj_scan.h"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+#include "io/csv_fields.h"
+#include "io/input_error.h"
+
+namespace rayvec {
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// Splits off the next whitespace-separated token; empty at the end of the line.
+std::string_view next_token(std::string_view& line) {
+  std::size_t i = 0;
+  while (i < line.size() && is_space(line[i])) ++i;
+  std::size_t j = i;
+  while (j < line.size() && !is_space(line[j])) ++j;
+  const std::string_view token = line.substr(i, j - i);
+  line.remove_prefix(j);
+  return token;
+}
+
+// `v`, `vn`, `vt`: the first `needed` numbers must be finite floats (tinyobjloader stores floats).
+void check_coordinates(std::string_view rest, int needed, const char* kind, const std::string& path,
+                       std::size_t line_no) {
+  for (int k = 0; k < needed; ++k) {
+    const std::string_view token = next_token(rest);
+    if (token.empty())
+      throw InputError(path, line_no,
+                       std::string("`") + kind + "` needs " + std::to_string(needed) +
+                           " coordinates, found " + std::to_string(k));
+    std::string_view digits = token;
+    if (digits.size() > 1 && digits.front() == '+') digits.remove_prefix(1);
+    double value = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    const bool parsed = end == digits.data() + digits.size() &&
+                        (ec == std::errc() || ec == std::errc::result_out_of_range);
+    if (!parsed || !std::isfinite(value) || !std::isfinite(static_cast<float>(value)))
+      throw InputError(path, line_no,
+                       std::string("`") + kind + "` coordinate " + std::to_string(k + 1) + " '" +
+                           std::string(token) + "' is not a finite number");
+  }
+}
+
+struct Counts {
+  long v = 0, vt = 0, vn = 0;
+};
+
+// A positive index beyond what has been read so far may still be defined later in the file; those
+// are checked once the totals are known.
+struct ForwardRef {
+  std::size_t line;
+  long index;
+  int kind;  // 0 v, 1 vt, 2 vn
+};
+
+const char* const kKindNames[] = {"vertex", "texture coordinate", "normal"};
+const char* const kKindPlurals[] = {"vertices", "texture coordinates", "normals"};
+
+void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRef>& forward,
+                const std::string& path, std::size_t line_no) {
+  int corners = 0;
+  for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
+    ++corners;
+    // v, v/vt, v//vn, v/vt/vn
+    for (int kind = 0; kind < 3 && !token.empty(); ++kind) {
+      const std::size_t slash = token.find('/');
+      const std::string_view part = token.substr(0, slash);
+      token = slash == std::string_view::npos ? std::string_view() : token.substr(slash + 1);
+      if (part.empty() && kind > 0) continue;  // v//vn
+      long index = 0;
+      const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
+      const std::string where = std::string("face corner ") + std::to_string(corners) + ": " +
+                                kKindNames[kind] + " index '" + std::string(part) + "'";
+      if (ec != std::errc() || end != part.data() + part.size())
+        throw InputError(path, line_no, where + " is not an integer");
+      if (index == 0) throw InputError(path, line_no, where + " is 0 (OBJ indices start at 1)");
+      const long have = kind == 0 ? seen.v : kind == 1 ? seen.vt : seen.vn;
+      if (index < 0 && have + index < 0)
+        throw InputError(path, line_no,
+                         where + " is out of range: only " + std::to_string(have) + " " +
+                             kKindPlurals[kind] + " are defined before this line");
+      if (index > have) forward.push_back({line_no, index, kind});
+    }
+  }
+  if (corners < 3)
+    throw InputError(path, line_no,
+                     "a face needs at least 3 corners, found " + std::to_string(corners));
+}
+
+}  // namespace
+
+void check_obj_text(std::string_view text, const std::string& path) {
+  Counts seen;
+  std::vector<ForwardRef> forward;
+  LineCursor cursor(text);
+  std::string_view line;
+  while (cursor.next(line)) {
+    std::string_view rest = line;
+    const std::string_view keyword = next_token(rest);
+    const std::size_t line_no = cursor.line_number();
+    if (keyword == "v") {
+      check_coordinates(rest, 3, "v", path, line_no);
+      ++seen.v;
+    } else if (keyword == "vn") {
+      check_coordinates(rest, 3, "vn", path, line_no);
+      ++seen.vn;
+    } else if (keyword == "vt") {
+      check_coordinates(rest, 1, "vt", path, line_no);
+      ++seen.vt;
+    } else if (keyword == "f") {
+      check_face(rest, seen, forward, path, line_no);
+    }
+  }
+  for (const ForwardRef& ref : forward) {
+    const long total = ref.kind == 0 ? seen.v : ref.kind == 1 ? seen.vt : seen.vn;
+    if (ref.index > total)
+      throw InputError(path, ref.line,
+                       std::string("face ") + kKindNames[ref.kind] + " index " +
+                           std::to_string(ref.index) + " is out of range: the file defines " +
+                           std::to_string(total) + " " + kKindPlurals[ref.kind]);
+  }
+}
+
+}  // namespace rayvec

@@ -1,0 +1,17 @@
+// check_obj_text: rayvec's own pass over an OBJ file before tinyobjloader reads it, for what
+// tinyobjloader does not report with a line number or at all: it reads `nan`/`inf` (and any other
+// unparsable text) in a `v` line as 0.0, skips faces with out-of-range indices (quads) or keeps them
+// (triangles) with only a global warning. One linear pass over the text; no allocation per line.
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace rayvec {
+
+// Throws InputError `file:line: what is wrong` for: a `v`, `vn` or `vt` line with too few
+// coordinates or a coordinate that is not a finite float; a face (`f`) with fewer than 3 corners; a
+// face index of 0, one that is not an integer, or one that refers to a vertex, normal or texture
+// coordinate that does not exist (negative indices are relative, as in the OBJ specification).
+void check_obj_text(std::string_view text, const std::string& path);
+
+}  // namespace rayvec

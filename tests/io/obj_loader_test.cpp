@@ -1,0 +1,163 @@
+// load_obj: triangle ids after triangulation, materials, attributes, and the errors tinyobjloader
+// would not report (nan vertices, indices out of range) with their line numbers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "io/input_error.h"
+#include "scene/obj_loader.h"
+#include "test_support.h"
+
+namespace rayvec {
+namespace {
+
+const std::string kData = RAYVEC_TEST_DATA;
+
+// The InputError message of loading `obj_text` from a fresh file named bad.obj ("" when it loads).
+std::string error_of(const std::string& obj_text, std::string* path_out = nullptr) {
+  const std::string path = test::temp_dir("obj_error") + "/bad.obj";
+  test::write_file(path, obj_text);
+  if (path_out) *path_out = path;
+  try {
+    load_obj(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+double area(const TriangleMesh& m, std::size_t t) {
+  const Vec3f a = m.vertex(t, 0), b = m.vertex(t, 1), c = m.vertex(t, 2);
+  return 0.5 * length(cross(Vec3d(b - a), Vec3d(c - a)));
+}
+
+TEST(ObjLoader, QuadSplitsAlongItsShorterDiagonal) {
+  const ObjModel m = load_obj(kData + "/obj/polygons.obj");
+  ASSERT_EQ(m.mesh.size(), 6u);  // quad 2 + pentagon 3 + triangle 1
+  // Quad 1..4: diagonal 2-4 (length^2 5) is shorter than 1-3 (10), so tinyobjloader makes
+  // (1,2,4) and (2,3,4): 0-based (0,1,3) and (1,2,3).
+  EXPECT_EQ(m.mesh.triangles[0], (std::array<uint32_t, 3>{0, 1, 3}));
+  EXPECT_EQ(m.mesh.triangles[1], (std::array<uint32_t, 3>{1, 2, 3}));
+  // The closing triangle keeps its corners and comes last.
+  EXPECT_EQ(m.mesh.triangles[5], (std::array<uint32_t, 3>{9, 10, 11}));
+}
+
+TEST(ObjLoader, PentagonBecomesThreeTrianglesCoveringIt) {
+  const ObjModel m = load_obj(kData + "/obj/polygons.obj");
+  ASSERT_EQ(m.mesh.size(), 6u);
+  // Ids 2..4: corners from the pentagon (rows 4..8), area equal to the pentagon's (shoelace: 7.5).
+  double total = 0;
+  for (std::size_t t = 2; t <= 4; ++t) {
+    for (uint32_t corner : m.mesh.triangles[t]) {
+      EXPECT_GE(corner, 4u);
+      EXPECT_LE(corner, 8u);
+    }
+    EXPECT_GT(area(m.mesh, t), 0.0);
+    total += area(m.mesh, t);
+  }
+  EXPECT_NEAR(total, 7.5, 1e-6);
+}
+
+TEST(ObjLoader, ReadsMaterialsFromTheMtl) {
+  const ObjModel m = load_obj(kData + "/obj/polygons.obj");
+  ASSERT_EQ(m.materials.size(), 2u);
+  const Material& red = m.materials[0];
+  EXPECT_EQ(red.name, "red");
+  EXPECT_EQ(red.Ka, (Vec3f{0.1f, 0, 0}));
+  EXPECT_EQ(red.Kd, (Vec3f{0.8f, 0.1f, 0.1f}));
+  EXPECT_EQ(red.Ks, (Vec3f{0.5f, 0.5f, 0.5f}));
+  EXPECT_EQ(red.Ke, (Vec3f{0, 0, 0.2f}));
+  EXPECT_EQ(red.Tf, (Vec3f{0.9f, 0.8f, 0.7f}));
+  EXPECT_EQ(red.Ns, 64.0f);
+  EXPECT_EQ(red.Ni, 1.5f);
+  EXPECT_EQ(red.d, 0.75f);
+  EXPECT_EQ(red.illum, 3);
+  EXPECT_EQ(red.map_Kd, "");
+  // map_Kd is relative to the MTL's directory and made absolute.
+  const std::string tex = m.materials[1].map_Kd;
+  EXPECT_TRUE(std::filesystem::path(tex).is_absolute()) << tex;
+  EXPECT_EQ(std::filesystem::path(tex),
+            std::filesystem::absolute(kData + "/obj/mtl/tex/missing_wood.png").lexically_normal());
+  // Per triangle: quad red (0), pentagon and triangle textured (1).
+  EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{0, 0, 1, 1, 1, 1}));
+}
+
+TEST(ObjLoader, MissingTextureIsAWarning) {
+  const ObjModel m = load_obj(kData + "/obj/polygons.obj");
+  bool found = false;
+  for (const std::string& w : m.warnings) found |= w.find("missing_wood.png") != std::string::npos;
+  EXPECT_TRUE(found);
+}
+
+TEST(ObjLoader, KeepsPerCornerNormalsAndTexcoords) {
+  const ObjModel m = load_obj(kData + "/obj/polygons.obj");
+  ASSERT_EQ(m.normals.size(), 1u);
+  ASSERT_EQ(m.texcoords.size(), 1u);
+  EXPECT_EQ(m.texcoords[0][1], 0.25f);
+  EXPECT_EQ(m.triangle_normals[0], (std::array<int32_t, 3>{0, 0, 0}));
+  EXPECT_EQ(m.triangle_texcoords[0], (std::array<int32_t, 3>{0, 0, 0}));
+  EXPECT_EQ(m.triangle_normals[2], (std::array<int32_t, 3>{-1, -1, -1}));
+  EXPECT_EQ(m.triangle_normals[5], (std::array<int32_t, 3>{0, 0, 0}));
+  EXPECT_EQ(m.triangle_texcoords[5], (std::array<int32_t, 3>{-1, -1, -1}));
+}
+
+TEST(ObjLoader, NonFiniteVertexIsRejectedWithItsLine) {
+  std::string path;
+  const std::string e = error_of("v 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 2 3\n", &path);
+  EXPECT_NE(e.find(path + ":3: `v` coordinate 2 'nan' is not a finite number"), std::string::npos) << e;
+  EXPECT_NE(error_of("# c\nv inf 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").find(":2: `v` coordinate 1 'inf'"),
+            std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 1e39\nv 0 1 0\nf 1 2 3\n").find(":2:"), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n").find(":2: `v` needs 3 coordinates, found 2"),
+            std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -nan\nf 1 2 3\n").find(":4: `vn`"),
+            std::string::npos);
+}
+
+TEST(ObjLoader, FaceIndexOutOfRangeIsRejectedWithItsLine) {
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_NE(error_of(tri + "f 1 2 3\nf 1 2 9\n").find(":5: face vertex index 9 is out of range: the file defines 3 vertices"),
+            std::string::npos)
+      << error_of(tri + "f 1 2 9\n");
+  EXPECT_NE(error_of(tri + "f 1 2 3 7\n").find(":4: face vertex index 7 is out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of(tri + "f -1 -2 -4\n").find(":4: face corner 3: vertex index '-4' is out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of(tri + "f 0 1 2\n").find(":4: face corner 1: vertex index '0' is 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(tri + "vn 0 0 1\nf 1//1 2//2 3//1\n").find(":5: face normal index 2 is out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of(tri + "f 1 2\n").find(":4: a face needs at least 3 corners, found 2"),
+            std::string::npos);
+  EXPECT_NE(error_of(tri + "f 1 2 x\n").find(":4: face corner 3: vertex index 'x' is not an integer"),
+            std::string::npos);
+  // Relative indices and a vertex defined after its face are valid OBJ.
+  EXPECT_EQ(error_of(tri + "f -3 -2 -1\nf 1 2 4\nv 1 1 0\n"), "");
+}
+
+TEST(ObjLoader, MissingFileAndEmptyMeshAreInputErrors) {
+  const std::string path = test::temp_dir("obj_missing") + "/none.obj";
+  try {
+    load_obj(path);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": cannot read"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\n").find("no triangles"), std::string::npos);
+}
+
+TEST(ObjLoader, MissingMtlIsAWarningNotAnError) {
+  const std::string dir = test::temp_dir("obj_nomtl");
+  test::write_file(dir + "/m.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n");
+  const ObjModel m = load_obj(dir + "/m.obj");
+  ASSERT_EQ(m.mesh.size(), 1u);
+  EXPECT_EQ(m.triangle_material[0], -1);
+  bool found = false;
+  for (const std::string& w : m.warnings) found |= w.find("gone.mtl") != std::string::npos;
+  EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace rayvec
