@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "accel/brute_force.h"
+#include "accel/bvh.h"
 
 namespace rayvec {
 
@@ -22,9 +23,9 @@ std::unique_ptr<Accelerator> make_accelerator(AccelKind kind, const TriangleMesh
                                               const TraceConfig& config) {
   switch (kind) {
     case AccelKind::brute: return std::make_unique<BruteForce>(mesh, config);
-    case AccelKind::bvh: break;
+    case AccelKind::bvh: return std::make_unique<Bvh>(mesh, config);
   }
-  throw std::invalid_argument("accelerator 'bvh' is not available yet");
+  throw std::invalid_argument("unknown accelerator");
 }
 
 void trace_closest(const Accelerator& accel, const RayBatch& rays, std::span<Hit> hits) {

@@ -1,0 +1,38 @@
+#include "accel/bvh.h"
+
+#include <cmath>
+
+namespace rayvec {
+namespace {
+
+// Brute force never hits a ray with a NaN or infinite origin or direction, or a NaN interval (every
+// kernel comparison is ordered); rejecting them here keeps NaN out of the box test.
+bool traceable(const Ray& r) {
+  return std::isfinite(r.org.x) && std::isfinite(r.org.y) && std::isfinite(r.org.z) &&
+         std::isfinite(r.dir.x) && std::isfinite(r.dir.y) && std::isfinite(r.dir.z) &&
+         !std::isnan(r.tmin) && !std::isnan(r.tmax);
+}
+
+}  // namespace
+
+Bvh::Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& options)
+    : config_(config),
+      kernels_(&triangle_kernels(config.isa, config.intersector)),
+      traversal_(&bvh_kernels(config.isa,
+                              options.width ? options.width : bvh_widths(config.isa).widths[0])) {
+  const BinaryBvh binary = build_binned_sah(mesh, options.sah);
+  tree_ = WideBvh(binary, traversal_->width);
+  tris_ = TriangleSoA(mesh, binary.order);
+}
+
+Hit Bvh::closest(const Ray& ray) const {
+  Hit hit;
+  if (traceable(ray)) traversal_->closest(tree_.arrays(), tris_.arrays(), *kernels_, ray, hit);
+  return hit;
+}
+
+bool Bvh::occluded(const Ray& ray, const HitFilter* filter) const {
+  return traceable(ray) && traversal_->occluded(tree_.arrays(), tris_.arrays(), *kernels_, ray, filter);
+}
+
+}  // namespace rayvec

@@ -1,0 +1,41 @@
+// Bvh: the accelerator for real scenes — a binned-SAH tree (bvh/binned_sah_builder.h) collapsed into
+// a wide BVH (bvh/wide_bvh.h) whose leaves are slot ranges of one TriangleSoA in leaf order, so the
+// leaf intersector is the triangle kernel table of the configured ISA and intersector. Returns
+// exactly what BruteForce returns (same ids and t; equal t: lowest id).
+#pragma once
+#include "accel/accelerator.h"
+#include "bvh/binned_sah_builder.h"
+#include "bvh/bvh_kernels.h"
+#include "bvh/wide_bvh.h"
+#include "kernels/kernel_table.h"
+#include "kernels/triangle_soa.h"
+
+namespace rayvec {
+
+struct BvhOptions {
+  SahConfig sah;
+  int width = 0;  // children per node: 0 = the ISA's default (bvh_widths(isa).widths[0])
+};
+
+class Bvh final : public Accelerator {
+ public:
+  // Builds with omp_get_max_threads() threads. Throws std::length_error for 2^26 or more triangles.
+  Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& options = {});
+
+  Hit closest(const Ray& ray) const override;
+  bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
+  std::size_t bytes() const override { return tris_.bytes() + tree_.bytes(); }
+  const TraceConfig& config() const override { return config_; }
+
+  const WideBvh& tree() const { return tree_; }
+  const TriangleSoA& triangles() const { return tris_; }
+
+ private:
+  TraceConfig config_;
+  WideBvh tree_;
+  TriangleSoA tris_;
+  const TriangleKernels* kernels_;
+  const BvhKernels* traversal_;
+};
+
+}  // namespace rayvec

@@ -1,0 +1,34 @@
+// Chooses the BVH traversal table for an ISA and node width. Baseline code; ISA units are entered
+// only when the CPU supports them.
+#include <stdexcept>
+#include <string>
+
+#include "bvh/bvh_kernels.h"
+
+namespace rayvec {
+
+BvhWidths bvh_widths(Isa isa) {
+  switch (isa) {
+    case Isa::avx512: return {{8, 16, 0}, 2};
+    case Isa::avx2: return {{8, 0, 0}, 1};
+    case Isa::scalar: break;
+  }
+  return {{4, 8, 0}, 2};
+}
+
+const BvhKernels& bvh_kernels(Isa isa, int width) {
+  if (!isa_supported(isa))
+    throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
+  const BvhKernels* k = nullptr;
+  switch (isa) {
+    case Isa::avx512: k = avx512::bvh_kernels(width); break;
+    case Isa::avx2: k = avx2::bvh_kernels(width); break;
+    case Isa::scalar: k = scalar::bvh_kernels(width); break;
+  }
+  if (!k)
+    throw std::invalid_argument("no " + std::to_string(width) + "-wide BVH traversal for ISA " +
+                                isa_name(isa));
+  return *k;
+}
+
+}  // namespace rayvec

@@ -1,0 +1,39 @@
+// BvhKernels: the traversal functions one (ISA, node width) pair provides, chosen once per BVH
+// (bvh_dispatch.cpp) like the triangle kernel table, never per ray.
+#pragma once
+#include <cstddef>
+
+#include "bvh/wide_bvh.h"
+#include "kernels/kernel_table.h"
+
+namespace rayvec {
+
+struct BvhKernels {
+  Isa isa;
+  int width;  // children per node this table traverses
+
+  // Closest hit of `ray` (finite origin and direction) as TriangleKernels::closest defines it, over
+  // the whole tree; `hit` must be a miss or a previous result for the same ray.
+  void (*closest)(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                  const Ray& ray, Hit& hit);
+  // Any hit (finite origin and direction) accepted by `filter` (may be null); exits at the first.
+  bool (*occluded)(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                   const Ray& ray, const HitFilter* filter);
+};
+
+// The node widths an ISA has traversal code for, the first being its default (measured, see
+// docs/benchmarks.md).
+struct BvhWidths {
+  int widths[3];
+  int count;
+};
+BvhWidths bvh_widths(Isa isa);
+
+// The table for (isa, width); the ISA must be supported and the width one of bvh_widths(isa).
+const BvhKernels& bvh_kernels(Isa isa, int width);
+
+namespace scalar { const BvhKernels* bvh_kernels(int width); }
+namespace avx2 { const BvhKernels* bvh_kernels(int width); }
+namespace avx512 { const BvhKernels* bvh_kernels(int width); }
+
+}  // namespace rayvec

@@ -1,0 +1,24 @@
+// Instantiates the wide-BVH traversal (bvh_traversal.inl) for avx2. Thin on purpose: the traversal
+// body is shared; only the box-lanes type and the compile flags (cmake/IsaFlags.cmake) differ.
+#include <cstdint>
+
+#include "bvh/bvh_kernels.h"
+#include "kernels/simd/box_lanes_avx2.h"
+
+namespace rayvec::avx2 {
+
+#include "bvh/bvh_traversal.inl"
+
+namespace {
+// constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
+constinit const BvhKernels k8{Isa::avx2, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>};
+}  // namespace
+
+const BvhKernels* bvh_kernels(int width) {
+  switch (width) {
+    case 8: return &k8;
+    default: return nullptr;
+  }
+}
+
+}  // namespace rayvec::avx2

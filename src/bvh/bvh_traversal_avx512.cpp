@@ -1,0 +1,26 @@
+// Instantiates the wide-BVH traversal (bvh_traversal.inl) for avx512. Thin on purpose: the traversal
+// body is shared; only the box-lanes type and the compile flags (cmake/IsaFlags.cmake) differ.
+#include <cstdint>
+
+#include "bvh/bvh_kernels.h"
+#include "kernels/simd/box_lanes_avx512.h"
+
+namespace rayvec::avx512 {
+
+#include "bvh/bvh_traversal.inl"
+
+namespace {
+// constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
+constinit const BvhKernels k8{Isa::avx512, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>};
+constinit const BvhKernels k16{Isa::avx512, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>};
+}  // namespace
+
+const BvhKernels* bvh_kernels(int width) {
+  switch (width) {
+    case 8: return &k8;
+    case 16: return &k16;
+    default: return nullptr;
+  }
+}
+
+}  // namespace rayvec::avx512

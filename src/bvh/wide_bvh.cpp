@@ -1,0 +1,134 @@
+#include "bvh/wide_bvh.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <new>
+#include <stdexcept>
+#include <vector>
+
+namespace rayvec {
+namespace {
+
+template <int N>
+class Collapser {
+ public:
+  explicit Collapser(const BinaryBvh& tree) : tree_(tree) {}
+
+  std::vector<WideNode<N>> run(uint32_t& depth, uint32_t& leaves) {
+    nodes_.emplace_back();
+    clear(nodes_[0]);
+    if (!tree_.nodes.empty()) {
+      const BinaryNode& root = tree_.nodes[0];
+      if (root.leaf()) {
+        set_child(0, 0, root.box, leaf_ref(root));
+        depth_ = 1;
+      } else {
+        fill(0, 0, 1);
+      }
+    } else {
+      depth_ = 1;
+    }
+    depth = depth_;
+    leaves = leaves_;
+    return std::move(nodes_);
+  }
+
+ private:
+  static void clear(WideNode<N>& n) {
+    const float inf = std::numeric_limits<float>::infinity();
+    for (int k = 0; k < N; ++k) {
+      for (int a = 0; a < 3; ++a) {
+        n.bounds[a][k] = inf;
+        n.bounds[a + 3][k] = -inf;
+      }
+      n.ref[k] = kEmptyRef;
+    }
+  }
+
+  void set_child(uint32_t w, int k, const BBox& b, uint32_t ref) {
+    WideNode<N>& n = nodes_[w];
+    for (int a = 0; a < 3; ++a) {
+      n.bounds[a][k] = b.lo[a];
+      n.bounds[a + 3][k] = b.hi[a];
+    }
+    n.ref[k] = ref;
+  }
+
+  uint32_t leaf_ref(const BinaryNode& leaf) {
+    if (leaf.count > kMaxLeafTriangles) throw std::logic_error("BVH leaf larger than 32 triangles");
+    ++leaves_;
+    return kLeafFlag | (leaf.first << 5) | (leaf.count - 1);
+  }
+
+  // Fills wide node w from the binary inner node b (at wide level `level`).
+  void fill(uint32_t w, uint32_t b, uint32_t level) {
+    depth_ = std::max(depth_, level);
+    uint32_t kids[N];
+    int count = 2;
+    kids[0] = tree_.nodes[b].first;
+    kids[1] = tree_.nodes[b].first + 1;
+    while (count < N) {  // open the inner child with the largest area
+      int best = -1;
+      float best_area = -1.0f;
+      for (int k = 0; k < count; ++k) {
+        const BinaryNode& c = tree_.nodes[kids[k]];
+        if (!c.leaf() && c.box.half_area() > best_area) {
+          best_area = c.box.half_area();
+          best = k;
+        }
+      }
+      if (best < 0) break;
+      const uint32_t opened = kids[best];
+      kids[best] = tree_.nodes[opened].first;
+      kids[count++] = tree_.nodes[opened].first + 1;
+    }
+    for (int k = 0; k < count; ++k) {
+      const BinaryNode& c = tree_.nodes[kids[k]];
+      if (c.leaf()) {
+        set_child(w, k, c.box, leaf_ref(c));
+      } else {
+        const auto child = static_cast<uint32_t>(nodes_.size());
+        nodes_.emplace_back();
+        clear(nodes_.back());
+        set_child(w, k, c.box, child);
+        fill(child, kids[k], level + 1);
+      }
+    }
+  }
+
+  const BinaryBvh& tree_;
+  std::vector<WideNode<N>> nodes_;
+  uint32_t depth_ = 0, leaves_ = 0;
+};
+
+template <int N>
+void* collapse(const BinaryBvh& tree, uint32_t& count, uint32_t& depth, uint32_t& leaves,
+               std::size_t& bytes) {
+  const std::vector<WideNode<N>> nodes = Collapser<N>(tree).run(depth, leaves);
+  bytes = nodes.size() * sizeof(WideNode<N>);
+  void* p = std::aligned_alloc(64, bytes);
+  if (!p) throw std::bad_alloc();
+  std::memcpy(p, nodes.data(), bytes);
+  count = static_cast<uint32_t>(nodes.size());
+  return p;
+}
+
+}  // namespace
+
+WideBvh::WideBvh(const BinaryBvh& tree, int width) {
+  if (tree.order.size() >= kMaxLeafBegin)
+    throw std::length_error("BVH: at most 2^26 - 1 triangles are supported");
+  uint32_t count = 0;
+  void* p = nullptr;
+  switch (width) {
+    case 4: p = collapse<4>(tree, count, depth_, leaves_, bytes_); break;
+    case 8: p = collapse<8>(tree, count, depth_, leaves_, bytes_); break;
+    case 16: p = collapse<16>(tree, count, depth_, leaves_, bytes_); break;
+    default: throw std::invalid_argument("BVH width must be 4, 8 or 16");
+  }
+  storage_.reset(p);
+  arrays_ = BvhArrays{p, uint32_t(width), count, depth_ * uint32_t(width - 1) + 1};
+}
+
+}  // namespace rayvec

@@ -1,0 +1,64 @@
+// WideBvh: the binary SAH tree collapsed into nodes of N = 4, 8 or 16 children whose boxes are stored
+// as structure-of-arrays, so one SIMD step tests a ray against all N boxes (Wald et al. 2008
+// "Getting Rid of Packets"; Embree's BVH4/BVH8). Leaves are ranges of slots of one TriangleSoA built
+// in leaf order, so the leaf intersector is the triangle kernel table.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+
+#include "bvh/binned_sah_builder.h"
+
+namespace rayvec {
+
+// A child reference: an inner node's index, a leaf (kLeafFlag | begin << 5 | count − 1, so a leaf
+// holds 1..32 triangles and begins below slot 2^26), or kEmptyRef for an unused slot.
+inline constexpr uint32_t kLeafFlag = 0x80000000u;
+inline constexpr uint32_t kEmptyRef = 0xffffffffu;
+inline constexpr uint32_t kMaxLeafTriangles = 32;
+inline constexpr uint32_t kMaxLeafBegin = 1u << 26;
+
+// One node: bounds[0..2] = lo x, y, z and bounds[3..5] = hi x, y, z of each child, child k in lane k.
+// Unused slots have lo = +inf, hi = −inf (no ray with finite origin and direction enters them) and
+// ref = kEmptyRef. Plain data with no member functions: the ISA units read it.
+template <int N>
+struct alignas(64) WideNode {
+  float bounds[6][N];
+  uint32_t ref[N];
+};
+
+// What the traversal kernels see. Node 0 is the root (an empty mesh has a root with no children).
+struct BvhArrays {
+  const void* nodes;     // WideNode<width>[node_count]
+  uint32_t width;
+  uint32_t node_count;
+  uint32_t stack_size;   // entries a traversal stack needs: depth · (width − 1) + 1, never exceeded
+};
+
+class WideBvh {
+ public:
+  WideBvh() = default;
+  // Collapses `tree` (leaves of at most kMaxLeafTriangles) into nodes of `width` ∈ {4, 8, 16}
+  // children, greedily opening the child of largest surface area first. Throws std::length_error
+  // when there are 2^26 or more triangles.
+  WideBvh(const BinaryBvh& tree, int width);
+
+  const BvhArrays& arrays() const { return arrays_; }
+  int width() const { return int(arrays_.width); }
+  uint32_t node_count() const { return arrays_.node_count; }
+  uint32_t depth() const { return depth_; }  // levels of wide nodes, the root being level 1
+  uint32_t leaf_count() const { return leaves_; }
+  std::size_t bytes() const { return bytes_; }
+
+ private:
+  struct FreeDeleter {
+    void operator()(void* p) const { std::free(p); }
+  };
+  std::unique_ptr<void, FreeDeleter> storage_;
+  BvhArrays arrays_{};
+  uint32_t depth_ = 0, leaves_ = 0;
+  std::size_t bytes_ = 0;
+};
+
+}  // namespace rayvec

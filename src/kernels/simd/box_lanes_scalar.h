@@ -1,0 +1,56 @@
+// Scalar ray–box test for the wide BVH: the same arithmetic as box_lanes_avx2.h / _avx512.h, one
+// child at a time, for baseline x86-64. Included only by *_scalar.cpp units, in namespace
+// rayvec::scalar. The robustness argument is documented in bvh/bvh_traversal.inl.
+#pragma once
+#include <cstdint>
+
+namespace rayvec::scalar {
+
+#ifndef RAYVEC_INLINE
+#define RAYVEC_INLINE inline __attribute__((always_inline))
+#endif
+
+struct BoxLanesRay {
+  float o[3], r[3];
+  int near[3], far[3];
+};
+
+template <int W>
+struct BoxLanes {
+  static constexpr int N = W;
+  using RayData = BoxLanesRay;
+
+  static RAYVEC_INLINE RayData prepare(const float o[3], const float rdir[3], const int near[3]) {
+    RayData d;
+    for (int a = 0; a < 3; ++a) {
+      d.o[a] = o[a];
+      d.r[a] = rdir[a];
+      d.near[a] = near[a];
+      d.far[a] = near[a] < 3 ? near[a] + 3 : near[a] - 3;
+    }
+    return d;
+  }
+
+  static RAYVEC_INLINE unsigned hits(const float (*b)[W], const RayData& r, float tmin, float tmax,
+                                     float eps, float* dist) {
+    unsigned mask = 0;
+    for (int k = 0; k < W; ++k) {
+      float tn = -__builtin_inff(), tf = __builtin_inff();
+      for (int a = 0; a < 3; ++a) {
+        const float n = (b[r.near[a]][k] - r.o[a]) * r.r[a];
+        const float f = (b[r.far[a]][k] - r.o[a]) * r.r[a];
+        if (n > tn) tn = n;  // a NaN slab (0·inf) fails the comparison and is skipped
+        if (f < tf) tf = f;
+      }
+      tn = tn - (tn < 0 ? -tn : tn) * eps;  // infinite ends become NaN and miss
+      tf = tf + (tf < 0 ? -tf : tf) * eps;
+      const float lo = tn == tn && tn > tmin ? tn : (tn == tn ? tmin : tn);
+      const float hi = tf == tf && tf < tmax ? tf : (tf == tf ? tmax : tf);
+      dist[k] = lo;
+      if (lo <= hi) mask |= 1u << k;
+    }
+    return mask;
+  }
+};
+
+}  // namespace rayvec::scalar
