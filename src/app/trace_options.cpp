@@ -15,7 +15,9 @@ void add_trace_options(Command& cmd, TraceOptions& options, bool with_accel) {
               "(Sena et al. 2018: |det| < 1e-6 culled, t > 1e-6)")
       .option("--threads", options.threads, "OpenMP threads (0 = all cores)");
   if (with_accel)
-    cmd.option("--accel", options.accel, "acceleration structure: brute (every triangle)");
+    cmd.option("--accel", options.accel,
+               "acceleration structure: bvh (default; wide SAH BVH) or brute (every triangle, the "
+               "paper's workload); both return the same hits");
 }
 
 TraceConfig resolve_trace_options(const TraceOptions& options) {

@@ -11,7 +11,7 @@ class Command;
 struct TraceOptions {
   std::string isa = "auto";
   std::string intersector = "mt";
-  std::string accel = "brute";
+  std::string accel = "bvh";  // brute stays available for the paper's workload
   int threads = 0;  // 0: all cores
 };
 
