@@ -62,8 +62,9 @@ std::vector<std::array<uint32_t, 3>> parse_faces_csv(std::string_view text, cons
       if (!(f[k] < static_cast<double>(vertex_count)))
         throw InputError(name, where.line,
                          field + " is out of range: the vertex file has " +
-                             std::to_string(vertex_count) + " rows (indices 0 to " +
-                             std::to_string(vertex_count ? vertex_count - 1 : 0) + ")");
+                             std::to_string(vertex_count) + " rows" +
+                             (vertex_count ? " (indices 0 to " + std::to_string(vertex_count - 1) + ")"
+                                           : std::string()));
       face[k] = static_cast<uint32_t>(f[k]);
     }
     faces.push_back(face);

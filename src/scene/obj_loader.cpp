@@ -70,8 +70,11 @@ Material convert(const tinyobj::material_t& m, const fs::path& mtl_dir,
 void split_warnings(const std::string& text, const std::string& path,
                     std::vector<std::string>& warnings) {
   std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);)
-    if (!line.empty() && line != ".") warnings.push_back(path + ": " + line);
+  for (std::string line; std::getline(lines, line);) {
+    // tinyobjloader repeats a missing MTL file in a second line; MtlReader already named it.
+    if (line.empty() || line == "." || line.rfind("Failed to load material file", 0) == 0) continue;
+    warnings.push_back(path + ": " + line);
+  }
 }
 
 }  // namespace
