@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   rayvec::register_visibility_command(cli);
   rayvec::register_compare_command(cli);
   rayvec::Command& bench = cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");
-  (void)bench;  // bench subcommands register on it: register_bench_<name>_command(bench)
+  // bench subcommands register on it: register_bench_<name>_command(bench)
+  rayvec::register_bench_rays_command(bench);
   return cli.main(argc, argv);
 }

@@ -1,0 +1,193 @@
+// `rayvec bench rays MODEL.obj`: BVH build time, bytes per triangle, and Mrays/s of primary (single
+// rays and 4×4 packets), shadow (any-hit) and incoherent rays, optionally against Embree 3 in the
+// same run (issue 3). The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "accel/bvh.h"
+#include "app/command_line.h"
+#include "app/commands.h"
+#include "app/trace_options.h"
+#include "bench/rays_bench.h"
+#include "io/input_error.h"
+#include "scene/obj_loader.h"
+
+namespace rayvec {
+namespace {
+
+struct Options {
+  std::string model, size = "1024x1024";
+  TraceOptions trace;
+  bool json = false, vs_embree = false;
+  int repeats = 5, width = 0;
+};
+
+void parse_size(const std::string& s, int& w, int& h) {
+  const auto x = s.find('x');
+  try {
+    std::size_t a = 0, b = 0;
+    if (x == std::string::npos) throw std::invalid_argument(s);
+    w = std::stoi(s.substr(0, x), &a);
+    h = std::stoi(s.substr(x + 1), &b);
+    if (a != x || b != s.size() - x - 1 || w < 1 || h < 1 || w > 16384 || h > 16384)
+      throw std::invalid_argument(s);
+  } catch (const std::exception&) {
+    throw InputError("--size: expected WxH with 1 <= W, H <= 16384, e.g. 1024x1024, got '" + s + "'");
+  }
+}
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) out += c;
+  }
+  return out + "\"";
+}
+
+void print_set_json(const char* key, const SetResult& r, bool comma) {
+  std::printf("\"%s\":{\"rays\":%llu,\"hits\":%llu,\"checksum\":%llu,\"mrays_per_s\":%.4f}%s", key,
+              (unsigned long long)r.rays, (unsigned long long)r.hits,
+              (unsigned long long)r.checksum, r.mrays_per_s(), comma ? "," : "");
+}
+
+void print_sets_json(const TracerRun& r) {
+  print_set_json("primary", r.primary, true);
+  print_set_json("primary_packet", r.primary_packet, true);
+  print_set_json("shadow", r.shadow, true);
+  print_set_json("incoherent", r.incoherent, false);
+}
+
+void print_row(const char* name, const SetResult& r, const SetResult* rival, uint64_t mismatches) {
+  std::printf("%-15s %10llu %10llu %22llu %9.2f", name, (unsigned long long)r.rays,
+              (unsigned long long)r.hits, (unsigned long long)r.checksum, r.mrays_per_s());
+  if (rival)
+    std::printf(" %9.2f %7.2fx %10llu", rival->mrays_per_s(),
+                rival->mrays_per_s() > 0 ? r.mrays_per_s() / rival->mrays_per_s() : 0.0,
+                (unsigned long long)mismatches);
+  std::printf("\n");
+}
+
+int run(const Options& o) {
+  int width = 0, height = 0;
+  parse_size(o.size, width, height);
+  if (o.repeats < 1) throw InputError("--repeats: must be at least 1");
+  if (o.vs_embree && !embree_available())
+    throw InputError("--vs-embree: this rayvec was built without Embree 3 (install libembree-dev "
+                     "and re-run CMake)");
+  const TraceConfig config = resolve_trace_options(o.trace);
+  const int threads = omp_get_max_threads();
+  if (o.width != 0) {
+    const BvhWidths w = bvh_widths(config.isa);
+    std::string allowed;
+    bool ok = false;
+    for (int k = 0; k < w.count; ++k) {
+      ok = ok || w.widths[k] == o.width;
+      allowed += (k ? ", " : "") + std::to_string(w.widths[k]);
+    }
+    if (!ok)
+      throw InputError("--bvh-width: " + std::string(isa_name(config.isa)) + " traverses nodes of " +
+                       allowed + " children (or 0 for the default)");
+  }
+  const ObjModel model = load_obj(o.model);
+  const TriangleMesh& mesh = model.mesh;
+
+  BvhOptions bvh_options;
+  bvh_options.width = o.width;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Bvh bvh(mesh, config, bvh_options);
+  const double build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double tris = double(mesh.size() ? mesh.size() : 1);
+  const double bytes_per_tri = double(bvh.bytes()) / tris;
+
+  const auto ours = make_accelerator_tracer(bvh);
+  const BenchRays rays = make_bench_rays(mesh, width, height, *ours);
+  const TracerRun run = run_bench_rays(*ours, rays, o.repeats);
+
+  double embree_build_s = 0;
+  TracerRun rival_run;
+  Mismatches mismatches;
+  if (o.vs_embree) {
+    const auto embree = make_embree_tracer(mesh, threads, embree_build_s);
+    rival_run = run_bench_rays(*embree, rays, o.repeats);
+    mismatches = count_mismatches(run, rival_run);
+  }
+
+  if (o.json) {
+    std::printf("{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
+                "\"intersector\":%s,\"threads\":%d,\"bvh_width\":%d,\"build_s\":%.6f,"
+                "\"bytes_per_tri\":%.3f,",
+                json_string(o.model).c_str(), mesh.size(), width, height,
+                json_string(cpu_features().brand).c_str(), json_string(isa_name(config.isa)).c_str(),
+                json_string(intersector_name(config.intersector)).c_str(), threads,
+                bvh.tree().width(), build_s, bytes_per_tri);
+    print_sets_json(run);
+    if (o.vs_embree) {
+      std::printf(",\"embree\":{\"build_s\":%.6f,", embree_build_s);
+      print_sets_json(rival_run);
+      std::printf(",\"mismatches\":{\"primary\":%llu,\"primary_packet\":%llu,\"shadow\":%llu,"
+                  "\"incoherent\":%llu}}",
+                  (unsigned long long)mismatches.primary, (unsigned long long)mismatches.primary_packet,
+                  (unsigned long long)mismatches.shadow, (unsigned long long)mismatches.incoherent);
+    }
+    std::printf("}\n");
+    return 0;
+  }
+  std::printf("model: %s, %zu triangles; %dx%d; median of %d runs after a warm-up\n",
+              o.model.c_str(), mesh.size(), width, height, o.repeats);
+  std::printf("cpu: %s; isa: %s; intersector: %s; threads: %d\n", cpu_features().brand.c_str(),
+              isa_name(config.isa), intersector_name(config.intersector), threads);
+  std::printf("bvh: %d-wide, %u nodes, %u leaves, depth %u; build %.4f s; %.1f bytes/triangle "
+              "(nodes %.1f + triangles %.1f)\n",
+              bvh.tree().width(), bvh.tree().node_count(), bvh.tree().leaf_count(), bvh.tree().depth(),
+              build_s, bytes_per_tri, double(bvh.tree().bytes()) / tris,
+              double(bvh.triangles().bytes()) / tris);
+  if (o.vs_embree)
+    std::printf("embree: RTC_BUILD_QUALITY_HIGH build %.4f s (rayvec/embree build time %.2f)\n",
+                embree_build_s, embree_build_s > 0 ? build_s / embree_build_s : 0.0);
+  std::printf("%-15s %10s %10s %22s %9s", "set", "rays", "hits", "checksum", "Mrays/s");
+  if (o.vs_embree) std::printf(" %9s %8s %10s", "embree", "ratio", "mismatches");
+  std::printf("\n");
+  const bool e = o.vs_embree;
+  print_row("primary", run.primary, e ? &rival_run.primary : nullptr, mismatches.primary);
+  print_row("primary_packet", run.primary_packet, e ? &rival_run.primary_packet : nullptr,
+            mismatches.primary_packet);
+  print_row("shadow", run.shadow, e ? &rival_run.shadow : nullptr, mismatches.shadow);
+  print_row("incoherent", run.incoherent, e ? &rival_run.incoherent : nullptr, mismatches.incoherent);
+  if (e)
+    std::printf("ratio = rayvec Mrays/s / embree Mrays/s (rtcIntersect1, rtcIntersect16 per 4x4 "
+                "tile, rtcOccluded1, rtcIntersect1); mismatches = rays whose triangle id (shadow: "
+                "occlusion) differs\n");
+  return 0;
+}
+
+}  // namespace
+
+void register_bench_rays_command(Command& bench) {
+  static Options o;
+  Command& cmd = bench.subcommand("rays", "BVH build time and Mrays/s of primary, packet, shadow "
+                                          "and incoherent rays on one OBJ mesh (optionally vs Embree)");
+  cmd.positional("MODEL", o.model, "Wavefront OBJ mesh")
+      .option("--size", o.size, "image size WxH of the primary rays (default 1024x1024)")
+      .flag("--json", o.json, "print one JSON object instead of the table")
+      .flag("--vs-embree", o.vs_embree,
+            "also trace the same rays with Embree 3 (RTC_BUILD_QUALITY_HIGH) and print ratios and "
+            "id mismatches; exit status 2 when rayvec was built without Embree")
+      .option("--repeats", o.repeats, "timed runs per ray set after one warm-up; the median is "
+                                      "reported (default 5)")
+      .option("--bvh-width", o.width, "children per BVH node: 0 = the ISA's default, 4, 8 or 16");
+  add_trace_options(cmd, o.trace, false);
+  cmd.footer(
+      "Ray sets (exact definitions in src/bench/ray_sets.h): primary = a pinhole camera framing the\n"
+      "mesh (single rays, and 4x4 tiles through Accelerator::closest_stream); shadow = any-hit from\n"
+      "each primary hit toward a light above the eye; incoherent = closest hit from each primary\n"
+      "hit in a random direction on the normal's hemisphere. checksum = sum over hits of\n"
+      "(pixel+1)*(triangle id+1) mod 2^64 (shadow: sum of pixel+1 over occluded rays).\n"
+      "Example: rayvec bench rays bumpy_sphere.obj --size 512x512 --threads 1 --vs-embree");
+  cmd.run([] { return run(o); });
+}
+
+}  // namespace rayvec

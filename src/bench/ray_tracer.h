@@ -1,0 +1,38 @@
+// RayTracer: what `rayvec bench rays` times — rayvec's accelerator or a rival (Embree) behind one
+// interface, so both trace the very same rays through the very same timing loop.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "rays/ray.h"
+
+namespace rayvec {
+
+class Accelerator;
+struct TriangleMesh;
+
+class RayTracer {
+ public:
+  virtual ~RayTracer() = default;
+  virtual std::string name() const = 0;
+  // n independent rays, one query each (single-ray API).
+  virtual void closest(const Ray* rays, Hit* hits, std::size_t n) const = 0;
+  // One coherent packet of n <= 16 rays (a 4×4 tile).
+  virtual void closest_packet(const Ray* rays, Hit* hits, std::size_t n) const = 0;
+  // n independent any-hit queries.
+  virtual void occluded(const Ray* rays, uint8_t* out, std::size_t n) const = 0;
+};
+
+// rayvec's accelerator: closest(), closest_stream() for packets, occluded().
+std::unique_ptr<RayTracer> make_accelerator_tracer(const Accelerator& accel);
+
+// Embree 3 with RTC_BUILD_QUALITY_HIGH, `threads` build threads: rtcIntersect1, rtcIntersect16,
+// rtcOccluded1. Null when rayvec was built without Embree. build_seconds receives the time of
+// rtcCommitScene.
+std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads,
+                                              double& build_seconds);
+bool embree_available();
+
+}  // namespace rayvec

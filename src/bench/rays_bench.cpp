@@ -1,0 +1,104 @@
+#include "bench/rays_bench.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace rayvec {
+namespace {
+
+constexpr std::size_t kChunk = 256;  // rays per OpenMP work item (single rays)
+constexpr std::size_t kTileChunk = 16;  // tiles per work item (packets)
+
+template <class F>
+double median_seconds(F&& trace, int repeats) {
+  trace();  // warm-up: page in the tree, settle the clocks
+  std::vector<double> times;
+  for (int r = 0; r < std::max(1, repeats); ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    trace();
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+void trace_closest(const RayTracer& t, const RaySet& set, std::vector<Hit>& hits) {
+  const auto n = static_cast<int64_t>(set.rays.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int64_t c = 0; c < n; c += int64_t(kChunk))
+    t.closest(set.rays.data() + c, hits.data() + c, std::size_t(std::min<int64_t>(kChunk, n - c)));
+}
+
+void trace_occluded(const RayTracer& t, const RaySet& set, std::vector<uint8_t>& out) {
+  const auto n = static_cast<int64_t>(set.rays.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int64_t c = 0; c < n; c += int64_t(kChunk))
+    t.occluded(set.rays.data() + c, out.data() + c, std::size_t(std::min<int64_t>(kChunk, n - c)));
+}
+
+void trace_tiles(const RayTracer& t, const BenchRays& b, std::vector<Hit>& hits) {
+  const auto tiles = static_cast<int64_t>(b.tile_start.size()) - 1;
+#pragma omp parallel for schedule(dynamic, kTileChunk)
+  for (int64_t k = 0; k < tiles; ++k) {
+    const uint32_t s = b.tile_start[k], e = b.tile_start[k + 1];
+    t.closest_packet(b.tiles.rays.data() + s, hits.data() + s, e - s);
+  }
+}
+
+SetResult summarize(const RaySet& set, const std::vector<Hit>& hits, double seconds) {
+  SetResult r{set.rays.size(), 0, hit_checksum(set, hits), seconds};
+  for (const Hit& h : hits) r.hits += h.hit() ? 1 : 0;
+  return r;
+}
+
+}  // namespace
+
+BenchRays make_bench_rays(const TriangleMesh& mesh, int width, int height, const RayTracer& reference) {
+  BenchRays b;
+  b.camera = frame_mesh(mesh, width, height);
+  b.primary = primary_rays(b.camera);
+  b.tiles = primary_tiles(b.camera, b.tile_start);
+  std::vector<Hit> hits(b.primary.rays.size());
+  trace_closest(reference, b.primary, hits);
+  b.shadow = shadow_rays(b.camera, b.primary, hits);
+  b.incoherent = incoherent_rays(b.camera, mesh, b.primary, hits);
+  return b;
+}
+
+TracerRun run_bench_rays(const RayTracer& t, const BenchRays& b, int repeats) {
+  TracerRun run;
+  run.primary_hits.resize(b.primary.rays.size());
+  run.packet_hits.resize(b.tiles.rays.size());
+  run.incoherent_hits.resize(b.incoherent.rays.size());
+  run.shadow_occluded.resize(b.shadow.rays.size());
+
+  double s = median_seconds([&] { trace_closest(t, b.primary, run.primary_hits); }, repeats);
+  run.primary = summarize(b.primary, run.primary_hits, s);
+  s = median_seconds([&] { trace_tiles(t, b, run.packet_hits); }, repeats);
+  run.primary_packet = summarize(b.tiles, run.packet_hits, s);
+  s = median_seconds([&] { trace_occluded(t, b.shadow, run.shadow_occluded); }, repeats);
+  run.shadow = SetResult{b.shadow.rays.size(), 0, occluded_checksum(b.shadow, run.shadow_occluded), s};
+  for (uint8_t o : run.shadow_occluded) run.shadow.hits += o;
+  s = median_seconds([&] { trace_closest(t, b.incoherent, run.incoherent_hits); }, repeats);
+  run.incoherent = summarize(b.incoherent, run.incoherent_hits, s);
+  return run;
+}
+
+Mismatches count_mismatches(const TracerRun& a, const TracerRun& b) {
+  Mismatches m;
+  auto ids = [](const std::vector<Hit>& x, const std::vector<Hit>& y) {
+    uint64_t n = 0;
+    for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) n += x[i].tri != y[i].tri;
+    return n;
+  };
+  m.primary = ids(a.primary_hits, b.primary_hits);
+  m.primary_packet = ids(a.packet_hits, b.packet_hits);
+  m.incoherent = ids(a.incoherent_hits, b.incoherent_hits);
+  for (std::size_t i = 0; i < a.shadow_occluded.size() && i < b.shadow_occluded.size(); ++i)
+    m.shadow += a.shadow_occluded[i] != b.shadow_occluded[i];
+  return m;
+}
+
+}  // namespace rayvec

@@ -1,0 +1,44 @@
+// The measurements of `rayvec bench rays`: the three ray sets of ray_sets.h traced by a RayTracer,
+// each timed as the median of `repeats` runs after one warm-up run (tracing and storing results
+// timed, ray generation not), OpenMP-parallel over chunks of rays or 4×4 tiles. Printing lives in
+// src/app/cmd_bench_rays.cpp.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "bench/ray_sets.h"
+#include "bench/ray_tracer.h"
+
+namespace rayvec {
+
+struct SetResult {
+  uint64_t rays = 0, hits = 0, checksum = 0;
+  double seconds = 0;
+  double mrays_per_s() const { return seconds > 0 ? double(rays) / seconds * 1e-6 : 0.0; }
+};
+
+// The rays every tracer traces. Shadow and incoherent rays start at the primary hits of the
+// reference tracer (rayvec), so a rival traces exactly the same rays.
+struct BenchRays {
+  BenchCamera camera;
+  RaySet primary;                    // row-major pixels
+  RaySet tiles;                      // the same rays by 4×4 tiles
+  std::vector<uint32_t> tile_start;  // tiles.rays[tile_start[k] .. tile_start[k+1])
+  RaySet shadow, incoherent;
+};
+BenchRays make_bench_rays(const TriangleMesh& mesh, int width, int height, const RayTracer& reference);
+
+struct TracerRun {
+  SetResult primary, primary_packet, shadow, incoherent;
+  std::vector<Hit> primary_hits, packet_hits, incoherent_hits;  // packet_hits in tile order
+  std::vector<uint8_t> shadow_occluded;
+};
+TracerRun run_bench_rays(const RayTracer& tracer, const BenchRays& rays, int repeats);
+
+// Rays whose triangle id (or occlusion) differs between two runs, per set.
+struct Mismatches {
+  uint64_t primary = 0, primary_packet = 0, shadow = 0, incoherent = 0;
+};
+Mismatches count_mismatches(const TracerRun& a, const TracerRun& b);
+
+}  // namespace rayvec

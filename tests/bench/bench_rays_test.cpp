@@ -1,0 +1,77 @@
+// `rayvec bench rays` runs at a tiny size (so the benchmark cannot rot), its JSON has the keys the
+// issue specifies, packets agree with single rays, and bad usage exits 2.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <string>
+
+#include "bench/ray_tracer.h"
+#include "test_support.h"
+
+namespace rayvec {
+namespace {
+
+std::string write_octahedron(const std::string& dir) {
+  const std::string path = dir + "/octa.obj";
+  test::write_file(path,
+                   "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
+                   "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n");
+  return path;
+}
+
+std::string field(const std::string& json, const std::string& set, const std::string& key) {
+  const std::regex re("\"" + set + "\":\\{[^}]*\"" + key + "\":([0-9.]+)");
+  std::smatch m;
+  return std::regex_search(json, m, re) ? m[1].str() : "";
+}
+
+TEST(BenchRays, TinyRunPrintsJsonWithEverySetAndPacketsMatchSingleRays) {
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays"));
+  const auto r = test::run_cli("bench rays " + obj + " --size 16x12 --repeats 1 --json --threads 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* key : {"\"build_s\"", "\"bytes_per_tri\"", "\"isa\"", "\"threads\":2"})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+  for (const char* set : {"primary", "primary_packet", "shadow", "incoherent"})
+    for (const char* key : {"rays", "hits", "checksum", "mrays_per_s"})
+      EXPECT_NE(field(r.out, set, key), "") << set << "." << key << " in " << r.out;
+  EXPECT_EQ(field(r.out, "primary", "rays"), "192");
+  EXPECT_NE(field(r.out, "primary", "hits"), "0");
+  EXPECT_EQ(field(r.out, "primary", "checksum"), field(r.out, "primary_packet", "checksum"));
+  EXPECT_EQ(field(r.out, "shadow", "rays"), field(r.out, "primary", "hits"));
+}
+
+TEST(BenchRays, EveryIsaGivesTheSameChecksums) {
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays_isa"));
+  const auto ref = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --isa scalar");
+  ASSERT_EQ(ref.status, 0) << ref.err;
+  for (const char* isa : {"avx2", "avx512"}) {
+    const auto r = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --isa " + isa);
+    if (r.status != 0) continue;  // ISA not on this CPU (a usage error, tested elsewhere)
+    for (const char* set : {"primary", "primary_packet", "shadow", "incoherent"})
+      EXPECT_EQ(field(r.out, set, "checksum"), field(ref.out, set, "checksum")) << isa << " " << set;
+  }
+}
+
+TEST(BenchRays, BadUsageExitsTwo) {
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays_bad"));
+  EXPECT_EQ(test::run_cli("bench rays " + obj + " --size 0x4").status, 2);
+  EXPECT_EQ(test::run_cli("bench rays " + obj + " --size big").status, 2);
+  EXPECT_EQ(test::run_cli("bench rays /nonexistent.obj --size 4x4").status, 2);
+  EXPECT_EQ(test::run_cli("bench rays " + obj + " --bvh-width 5 --size 4x4").status, 2);
+}
+
+TEST(BenchRays, VsEmbreeRunsWhenBuiltWithEmbreeAndOtherwiseExitsTwo) {
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays_embree"));
+  const auto r = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --vs-embree");
+  if (!embree_available()) {
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("without Embree"), std::string::npos) << r.err;
+    return;
+  }
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"embree\":{\"build_s\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"mismatches\":{\"primary\":0,"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace rayvec
