@@ -137,6 +137,12 @@ TEST(ObjLoader, FaceIndexOutOfRangeIsRejectedWithItsLine) {
   EXPECT_EQ(error_of(tri + "f -3 -2 -1\nf 1 2 4\nv 1 1 0\n"), "");
 }
 
+TEST(ObjLoader, AcceptsCrlfLineEnds) {
+  EXPECT_EQ(error_of("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"), "");
+  EXPECT_NE(error_of("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 4\r\n").find(":4: face vertex index 4"),
+            std::string::npos);
+}
+
 TEST(ObjLoader, MissingFileAndEmptyMeshAreInputErrors) {
   const std::string path = test::temp_dir("obj_missing") + "/none.obj";
   try {
