@@ -30,5 +30,6 @@ int main(int argc, char** argv) {
   rayvec::Command& bench = cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");
   // bench subcommands register on it: register_bench_<name>_command(bench)
   rayvec::register_bench_rays_command(bench);
+  rayvec::register_bench_paper_command(bench);
   return cli.main(argc, argv);
 }

@@ -1,0 +1,246 @@
+// `rayvec bench paper`: reproduces Sena et al. (2018) — Table 1 (original, optimized and vectorized
+// on one thread, 17 sizes) and the section 5.2 thread-scaling run — on the generated scene of
+// src/bench/paper_scene.h, printing a text table or one JSON object. Measurement: src/bench/paper_bench.cpp.
+#include <omp.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/command_line.h"
+#include "app/commands.h"
+#include "bench/paper_bench.h"
+#include "bench/paper_scene.h"
+#include "io/input_error.h"
+#include "kernels/kernel_table.h"
+
+namespace rayvec {
+namespace {
+
+// Ray scale-downs (the image side is divided, so ray counts stay perfect squares):
+constexpr uint32_t kQuickTableDivisor = 8;     // --quick Table 1: side / 8, rays / 64
+constexpr uint32_t kFullScalingDivisor = 8;    // section 5.2: 4096² → 512² = 262,144 rays
+constexpr uint32_t kQuickScalingDivisor = 32;  // --quick section 5.2: 128² = 16,384 rays
+
+struct Options {
+  bool quick = false, json = false, no_baselines = false, no_scaling = false;
+  int threads = 0;
+  int side_divisor = 0;  // testing: overrides every divisor and repeats nothing
+  std::string isa = "auto", models;
+};
+
+double gtests(double tests, const Timing& t) { return t.seconds > 0 ? tests / t.seconds / 1e9 : 0; }
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) out += c;
+  }
+  return out + "\"";
+}
+
+std::vector<const PaperModel*> chosen_models(const std::string& list) {
+  std::vector<const PaperModel*> out;
+  if (list.empty()) {
+    for (const PaperModel& m : kPaperTable1) out.push_back(&m);
+    return out;
+  }
+  std::stringstream ss(list);
+  for (std::string name; std::getline(ss, name, ',');) {
+    const PaperModel* found = nullptr;
+    for (const PaperModel& m : kPaperTable1)
+      if (name == m.name) found = &m;
+    if (!found) throw InputError("--models: unknown model '" + name + "' (mod1 .. mod17)");
+    out.push_back(found);
+  }
+  return out;
+}
+
+void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
+  std::printf("\nTable 1 (one thread; seconds are medians)%s\n",
+              divisor > 1 ? (" — rays scaled: image side / " + std::to_string(divisor) + ", rays / " +
+                             std::to_string(divisor * divisor) + " (approx.)").c_str()
+                          : " — full paper sizes");
+  std::printf("%-6s %9s %6s | %9s %9s %9s %9s | %8s %8s | %8s %8s | %6s %6s %6s %6s | %s\n",
+              "model", "rays", "tris", "original", "optimized", "vec-paper", "vec-mt", "orig/vec",
+              "opt/vec", "paper o/v", "paper p/v", "G/s o", "G/s p", "G/s vp", "G/s vm", "mismatch");
+  double sum_o = 0, sum_p = 0, sum_po = 0, sum_pp = 0;
+  int n = 0;
+  for (const Table1Result& r : rows) {
+    const double so = r.original.seconds / r.vec_paper.seconds;
+    const double sp = r.optimized.seconds / r.vec_paper.seconds;
+    if (r.baselines) {
+      std::printf("%-6s %9llu %6u | %9.4f %9.4f %9.4f %9.4f | %8.2f %8.2f | %8.2f %8.2f | %6.3f %6.3f "
+                  "%6.2f %6.2f | %llu\n",
+                  r.model.name, (unsigned long long)r.rays(), r.model.triangles, r.original.seconds,
+                  r.optimized.seconds, r.vec_paper.seconds, r.vec_mt.seconds, so, sp,
+                  r.model.speedup_original, r.model.speedup_optimized, gtests(r.tests(), r.original),
+                  gtests(r.tests(), r.optimized), gtests(r.tests(), r.vec_paper),
+                  gtests(r.tests(), r.vec_mt), (unsigned long long)r.mismatches);
+      sum_o += so, sum_p += sp, sum_po += r.model.speedup_original,
+          sum_pp += r.model.speedup_optimized, ++n;
+    } else {
+      std::printf("%-6s %9llu %6u | %9s %9s %9.4f %9.4f | %8s %8s | %8.2f %8.2f | %6s %6s %6.2f "
+                  "%6.2f | -\n",
+                  r.model.name, (unsigned long long)r.rays(), r.model.triangles, "-", "-",
+                  r.vec_paper.seconds, r.vec_mt.seconds, "-", "-", r.model.speedup_original,
+                  r.model.speedup_optimized, "-", "-", gtests(r.tests(), r.vec_paper),
+                  gtests(r.tests(), r.vec_mt));
+    }
+  }
+  if (n > 0)
+    std::printf("mean speedup (arithmetic, as the paper): original/vectorized %.2f (paper %.2f), "
+                "optimized/vectorized %.2f (paper %.2f)\n",
+                sum_o / n, sum_po / n, sum_p / n, sum_pp / n);
+  std::printf("vec-paper and vec-mt: the vectorized brute force with the paper's arithmetic and with "
+              "rayvec's default `mt`; speedups use vec-paper (the paper's vectorized version).\n");
+}
+
+void print_scaling(const std::vector<ScalingResult>& rows, uint32_t divisor) {
+  if (rows.empty()) return;
+  const uint32_t side = rows.front().side;
+  std::printf("\nThread scaling (section 5.2): 16,777,216 rays scaled to %u (image side 4096 / %u = "
+              "%u, rays / %u)\n",
+              side * side, divisor, side, divisor * divisor);
+  std::printf("%6s %-11s %7s %9s %8s %8s %9s\n", "tris", "intersector", "threads", "seconds",
+              "speedup", "G/s", "mismatch");
+  double base = 0;
+  for (const ScalingResult& r : rows) {
+    if (r.threads == 1) base = r.time.seconds;
+    const double tests = double(r.side) * r.side * r.triangles;
+    std::printf("%6u %-11s %7u %9.4f %8.2f %8.2f %9llu\n", r.triangles,
+                intersector_name(r.intersector), r.threads, r.time.seconds, base / r.time.seconds,
+                gtests(tests, r.time), (unsigned long long)r.mismatches);
+  }
+}
+
+void print_json(const Options& o, Isa isa, int threads, uint32_t table_divisor,
+                uint32_t scaling_divisor, const std::vector<Table1Result>& table,
+                const std::vector<ScalingResult>& scaling, uint64_t mismatches) {
+  std::printf("{\"cpu\":%s,\"isa\":%s,\"threads\":%d,\"quick\":%s,\"table1_side_divisor\":%u,"
+              "\"scaling_side_divisor\":%u,\"table1\":[",
+              json_string(cpu_features().brand).c_str(), json_string(isa_name(isa)).c_str(),
+              threads, o.quick ? "true" : "false", table_divisor, scaling_divisor);
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const Table1Result& r = table[i];
+    std::printf("%s{\"model\":%s,\"rays\":%llu,\"paper_rays\":%u,\"triangles\":%u,"
+                "\"seconds\":{\"vectorized_paper\":%.6g,\"vectorized_mt\":%.6g",
+                i ? "," : "", json_string(r.model.name).c_str(), (unsigned long long)r.rays(),
+                r.model.rays, r.model.triangles, r.vec_paper.seconds, r.vec_mt.seconds);
+    if (r.baselines)
+      std::printf(",\"original\":%.6g,\"optimized\":%.6g},\"speedup\":{\"original\":%.4g,"
+                  "\"optimized\":%.4g",
+                  r.original.seconds, r.optimized.seconds, r.original.seconds / r.vec_paper.seconds,
+                  r.optimized.seconds / r.vec_paper.seconds);
+    std::printf("},\"gtests_per_s\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g",
+                gtests(r.tests(), r.vec_paper), gtests(r.tests(), r.vec_mt));
+    if (r.baselines)
+      std::printf(",\"original\":%.4g,\"optimized\":%.4g", gtests(r.tests(), r.original),
+                  gtests(r.tests(), r.optimized));
+    std::printf("},\"paper\":{\"original\":%g,\"optimized\":%g,\"vectorized\":%g,"
+                "\"speedup_original\":%g,\"speedup_optimized\":%g},\"mismatches\":%llu,"
+                "\"mt_differences\":%llu}",
+                r.model.original_s, r.model.optimized_s, r.model.vectorized_s,
+                r.model.speedup_original, r.model.speedup_optimized,
+                (unsigned long long)r.mismatches, (unsigned long long)r.mt_differences);
+  }
+  std::printf("],\"scaling\":[");
+  for (std::size_t i = 0; i < scaling.size(); ++i) {
+    const ScalingResult& r = scaling[i];
+    std::printf("%s{\"rays\":%llu,\"triangles\":%u,\"intersector\":%s,\"threads\":%u,"
+                "\"seconds\":%.6g,\"mismatches\":%llu}",
+                i ? "," : "", (unsigned long long)(uint64_t(r.side) * r.side), r.triangles,
+                json_string(intersector_name(r.intersector)).c_str(), r.threads, r.time.seconds,
+                (unsigned long long)r.mismatches);
+  }
+  std::printf("],\"mismatches\":%llu}\n", (unsigned long long)mismatches);
+}
+
+int run(const Options& o) {
+  Isa isa;
+  if (const std::string err = resolve_isa(o.isa, isa); !err.empty()) throw InputError("--isa: " + err);
+  if (o.threads < 0) throw InputError("--threads: must be 0 (all cores) or more");
+  if (o.side_divisor < 0) throw InputError("--side-divisor: must be 1 or more");
+  const int threads = o.threads > 0 ? o.threads : omp_get_num_procs();
+  const auto models = chosen_models(o.models);
+  const bool testing = o.side_divisor > 0;
+  const uint32_t table_divisor = testing ? o.side_divisor : (o.quick ? kQuickTableDivisor : 1);
+  const uint32_t scaling_divisor =
+      testing ? o.side_divisor : (o.quick ? kQuickScalingDivisor : kFullScalingDivisor);
+  const double min_seconds = testing ? 0.0 : (o.quick ? 0.05 : 0.2);
+
+  if (!o.json) {
+    std::printf("rayvec bench paper: Sena et al. (2018), Table 1 and section 5.2, on a generated scene\n");
+    std::printf("cpu: %s\nisa: %s (%d floats per step)\nthreads: %d (Table 1 runs on one thread)\n",
+                cpu_features().brand.c_str(), isa_name(isa),
+                triangle_kernels(isa, Intersector::mt).width, threads);
+    std::printf("scene: triangles with vertices uniform in [0,1)^3 (SplitMix64, seed 0x%llx); "
+                "rays of a pinhole camera at (0.5,0.5,-1.5) through the cube's front face "
+                "(docs/benchmarks.md)\n",
+                (unsigned long long)kPaperSceneSeed);
+    std::fflush(stdout);
+  }
+  const bool tty = isatty(2);
+  const Progress progress = [tty](const std::string& what) {
+    std::fprintf(stderr, tty ? "\r\033[Kbench paper: %s" : "bench paper: %s\n", what.c_str());
+  };
+
+  std::vector<Table1Result> table;
+  uint64_t mismatches = 0;
+  for (const PaperModel* m : models) {
+    table.push_back(run_table1_row(*m, scaled_side(m->rays, table_divisor), isa, !o.no_baselines,
+                                   min_seconds, progress));
+    mismatches += table.back().mismatches;
+  }
+  std::vector<ScalingResult> scaling;
+  if (!o.no_scaling) {
+    const uint32_t side = scaled_side(kPaperScalingSide * kPaperScalingSide, scaling_divisor);
+    for (uint32_t tris : kPaperScalingTriangles)
+      for (Intersector in : {Intersector::paper, Intersector::mt})
+        for (const ScalingResult& r : run_scaling(side, tris, isa, in, threads, min_seconds, progress)) {
+          scaling.push_back(r);
+          mismatches += r.mismatches;
+        }
+  }
+  if (tty) std::fprintf(stderr, "\r\033[K");
+
+  if (o.json) {
+    print_json(o, isa, threads, table_divisor, scaling_divisor, table, scaling, mismatches);
+  } else {
+    print_table1(table, table_divisor);
+    print_scaling(scaling, scaling_divisor);
+    std::printf("\nmismatches (ids or t differing between original, optimized and vectorized paper; "
+                "or between thread counts): %llu\n",
+                (unsigned long long)mismatches);
+  }
+  if (mismatches > 0) {
+    std::fprintf(stderr, "rayvec: bench paper: %llu mismatching results\n",
+                 (unsigned long long)mismatches);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_bench_paper_command(Command& bench) {
+  static Options o;
+  bench.subcommand("paper", "Reproduce Sena et al. (2018): Table 1 and the thread-scaling run")
+      .flag("--quick", o.quick, "scaled-down rays (Table 1: rays / 64; scaling: rays / 1024), < 1 min")
+      .option("--threads", o.threads, "most threads for the scaling run (0 = all cores)")
+      .flag("--json", o.json, "print one JSON object instead of tables")
+      .option("--isa", o.isa, "vectorized ISA: auto, scalar, avx2 or avx512")
+      .option("--models", o.models, "only these Table 1 rows, e.g. mod2,mod7")
+      .flag("--no-baselines", o.no_baselines, "skip original and optimized (vectorized only)")
+      .flag("--no-scaling", o.no_scaling, "skip the thread-scaling run")
+      .option("--side-divisor", o.side_divisor,
+              "testing: divide every image side by this and time each run once")
+      .footer("Scene and method: docs/benchmarks.md. Exit status 1 if versions disagree.\n"
+              "Example: rayvec bench paper --quick")
+      .run([] { return run(o); });
+}
+
+}  // namespace rayvec

@@ -1,0 +1,162 @@
+#include "bench/paper_bench.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "accel/accelerator.h"
+#include "bench/paper_scene.h"
+#include "kernels/paper_baselines.h"
+
+namespace rayvec {
+
+const PaperModel kPaperTable1[17] = {
+    {"mod1", 40000, 2000, 1.016, 0.589, 0.061, 16.65, 9.65},
+    {"mod2", 40000, 50000, 26.430, 16.523, 2.502, 10.56, 6.60},
+    {"mod3", 1638400, 2000, 37.779, 20.037, 1.953, 19.34, 10.26},
+    {"mod4", 10000, 2000, 0.274, 0.167, 0.027, 10.15, 6.18},
+    {"mod5", 262144, 2000, 6.336, 3.473, 0.375, 16.89, 9.26},
+    {"mod6", 1048576, 2000, 24.982, 13.137, 1.517, 16.47, 8.66},
+    {"mod7", 4194304, 2000, 99.648, 49.072, 5.681, 17.54, 8.64},
+    {"mod8", 40000, 5000, 1.496, 1.262, 0.138, 10.84, 9.14},
+    {"mod9", 40000, 32258, 11.947, 6.926, 1.044, 11.44, 6.63},
+    {"mod10", 40000, 15774, 5.861, 3.725, 0.391, 14.99, 9.53},
+    {"mod11", 40000, 5000, 1.111, 0.824, 0.108, 10.29, 7.63},
+    {"mod12", 40000, 5000, 1.503, 1.281, 0.146, 10.29, 8.77},
+    {"mod13", 262144, 5000, 10.489, 8.377, 0.942, 11.13, 8.89},
+    {"mod14", 262144, 32258, 82.729, 47.715, 6.621, 12.49, 7.21},
+    {"mod15", 262144, 15744, 42.354, 23.581, 2.541, 16.67, 9.28},
+    {"mod16", 262144, 5000, 7.828, 5.399, 0.702, 11.15, 7.69},
+    {"mod17", 262144, 5000, 10.277, 7.794, 0.963, 10.67, 8.09},
+};
+
+namespace {
+
+constexpr std::size_t kChunk = 64;  // rays per closest_stream call (and per OpenMP work item)
+
+// Runs `fn` once, then again until `min_seconds` have passed in total (at most 15 runs); the median.
+template <typename Fn>
+Timing time_median(double min_seconds, Fn&& fn) {
+  std::vector<double> runs;
+  double total = 0;
+  do {
+    const auto start = std::chrono::steady_clock::now();
+    fn();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    runs.push_back(s);
+    total += s;
+  } while (total < min_seconds && runs.size() < 15);
+  std::sort(runs.begin(), runs.end());
+  return Timing{runs[runs.size() / 2], int(runs.size())};
+}
+
+std::vector<Ray> to_rays(const RayBatch& batch) {
+  std::vector<Ray> rays(batch.size());
+  for (std::size_t i = 0; i < batch.size(); ++i) rays[i] = batch[i];
+  return rays;
+}
+
+// The vectorized brute force as the library runs it: chunks of rays through closest_stream,
+// OpenMP-dynamic over chunks when threads > 1.
+void trace_vectorized(const Accelerator& accel, const std::vector<Ray>& rays, std::vector<Hit>& hits,
+                      int threads) {
+  const auto chunks = static_cast<std::int64_t>((rays.size() + kChunk - 1) / kChunk);
+  auto run_chunk = [&](std::int64_t c) {
+    const std::size_t begin = std::size_t(c) * kChunk;
+    accel.closest_stream(rays.data() + begin, hits.data() + begin,
+                         std::min(kChunk, rays.size() - begin));
+  };
+  if (threads <= 1) {
+    for (std::int64_t c = 0; c < chunks; ++c) run_chunk(c);
+    return;
+  }
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
+  for (std::int64_t c = 0; c < chunks; ++c) run_chunk(c);
+}
+
+bool same_hit(const Hit& a, const Hit& b) {
+  return a.tri == b.tri && (a.tri < 0 || (a.t == b.t && a.u == b.u && a.v == b.v));
+}
+
+}  // namespace
+
+uint32_t scaled_side(uint32_t rays, uint32_t divisor) {
+  const double side = std::sqrt(double(rays)) / std::max(divisor, 1u);
+  return std::max(1u, static_cast<uint32_t>(std::lround(side)));
+}
+
+Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, bool baselines,
+                            double min_seconds, const Progress& progress) {
+  Table1Result out;
+  out.model = model;
+  out.side = side;
+  out.baselines = baselines;
+  const TriangleMesh mesh = paper_triangles(model.triangles);
+  const RayBatch batch = paper_camera_rays(side);
+  const std::vector<Ray> rays = to_rays(batch);
+  const std::size_t n = rays.size();
+  auto say = [&](const char* what) {
+    if (progress) progress(std::string(model.name) + ": " + what);
+  };
+
+  std::vector<Hit> vec_paper(n), vec_mt(n);
+  {
+    say("vectorized (paper)");
+    const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, Intersector::paper});
+    out.vec_paper = time_median(min_seconds, [&] { trace_vectorized(*accel, rays, vec_paper, 1); });
+  }
+  {
+    say("vectorized (mt)");
+    const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, Intersector::mt});
+    out.vec_mt = time_median(min_seconds, [&] { trace_vectorized(*accel, rays, vec_mt, 1); });
+  }
+  for (std::size_t i = 0; i < n; ++i) out.mt_differences += vec_mt[i].tri != vec_paper[i].tri;
+  if (!baselines) return out;
+
+  std::vector<Hit> original(n), optimized(n);
+  {
+    say("original");
+    const PaperAosTriangles aos = paper_aos_triangles(mesh);
+    out.original = time_median(min_seconds, [&] { closest_original(aos, rays, 0, n, original); });
+  }
+  {
+    say("optimized");
+    const PaperSoaTriangles soa = paper_soa_triangles(mesh);
+    out.optimized = time_median(min_seconds, [&] { closest_optimized(soa, batch, 0, n, optimized); });
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    out.mismatches += !same_hit(original[i], vec_paper[i]) || !same_hit(optimized[i], vec_paper[i]);
+  return out;
+}
+
+std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa,
+                                       Intersector intersector, int max_threads,
+                                       double min_seconds, const Progress& progress) {
+  const TriangleMesh mesh = paper_triangles(triangles);
+  const std::vector<Ray> rays = to_rays(paper_camera_rays(side));
+  const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, intersector});
+  std::vector<Hit> reference(rays.size()), hits(rays.size());
+  std::vector<ScalingResult> out;
+  for (int threads = 1; threads <= max_threads; ++threads) {
+    if (progress)
+      progress(std::to_string(triangles) + " triangles, " + intersector_name(intersector) + ", " +
+               std::to_string(threads) + " thread(s)");
+    ScalingResult r;
+    r.side = side;
+    r.triangles = triangles;
+    r.threads = uint32_t(threads);
+    r.intersector = intersector;
+    std::vector<Hit>& dst = threads == 1 ? reference : hits;
+    r.time = time_median(min_seconds, [&] { trace_vectorized(*accel, rays, dst, threads); });
+    if (threads > 1)
+      for (std::size_t i = 0; i < rays.size(); ++i) r.mismatches += !same_hit(hits[i], reference[i]);
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace rayvec

@@ -1,0 +1,69 @@
+// The measurements of `rayvec bench paper`: Sena et al. (2018) Table 1 (original, optimized and
+// vectorized on one thread) and their section 5.2 thread-scaling run, on the generated scene of
+// paper_scene.h. Printing lives in src/app/cmd_bench_paper.cpp; this file only measures and checks.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "kernels/intersector.h"
+#include "kernels/isa.h"
+
+namespace rayvec {
+
+// One row of the paper's Table 1, with the paper's own numbers (seconds; Xeon Platinum 8160, icc).
+struct PaperModel {
+  const char* name;
+  uint32_t rays, triangles;
+  double original_s, optimized_s, vectorized_s;
+  double speedup_original, speedup_optimized;  // original/vectorized, optimized/vectorized
+};
+extern const PaperModel kPaperTable1[17];
+
+// Section 5.2: 16,777,216 rays (4096²) against 2,000 / 10,000 / 50,000 triangles.
+inline constexpr uint32_t kPaperScalingSide = 4096;
+inline constexpr uint32_t kPaperScalingTriangles[3] = {2000, 10000, 50000};
+
+// A timing: the median of `repeats` runs (short runs are repeated so the clock's resolution and
+// noise from other processes matter less).
+struct Timing {
+  double seconds = 0;
+  int repeats = 0;
+};
+
+struct Table1Result {
+  PaperModel model;
+  uint32_t side = 0;       // image side used: rays = side²
+  bool baselines = true;   // false when original/optimized were skipped
+  Timing original, optimized, vec_paper, vec_mt;
+  uint64_t mismatches = 0;      // rays where original, optimized and vectorized `paper` disagree
+  uint64_t mt_differences = 0;  // rays where `mt` picks another triangle than `paper` (allowed)
+  uint64_t rays() const { return uint64_t(side) * side; }
+  double tests() const { return double(rays()) * model.triangles; }
+};
+
+struct ScalingResult {
+  uint32_t side = 0, triangles = 0, threads = 0;
+  Intersector intersector = Intersector::mt;
+  Timing time;
+  uint64_t mismatches = 0;  // rays whose hit differs from the one-thread run
+};
+
+// Image side for `rays` (a perfect square) divided by `divisor`, rounded to nearest, at least 1.
+uint32_t scaled_side(uint32_t rays, uint32_t divisor);
+
+// Progress lines go here (stderr in the command); may be empty.
+using Progress = std::function<void(const std::string&)>;
+
+// One Table 1 row on one thread: original and optimized (unless !baselines) and the vectorized
+// brute force of `isa` with the `paper` and `mt` intersectors; checks that ids agree.
+Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, bool baselines,
+                            double min_seconds, const Progress& progress);
+
+// The vectorized brute force at 1..max_threads threads for one scaling size and intersector.
+std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa,
+                                       Intersector intersector, int max_threads,
+                                       double min_seconds, const Progress& progress);
+
+}  // namespace rayvec
