@@ -7,6 +7,8 @@ const char* intersector_name(Intersector i) {
     case Intersector::paper: return "paper";
     case Intersector::mt: return "mt";
     case Intersector::mt64: return "mt64";
+    case Intersector::watertight: return "watertight";
+    case Intersector::watertight64: return "watertight64";
   }
   return "?";
 }

@@ -29,10 +29,29 @@ enum class Intersector {
   // from the vertices (not from float-rounded edges), t rounded to float at the end. About 2^29 times
   // less rounding than `mt`; same NaN and degenerate guarantees; still not watertight.
   mt64,
+
+  // Watertight ray/triangle intersection (Woop, Benthin & Wald 2013) in float, from the exact input
+  // vertices (kernels/watertight.inl). Contract: edges and vertices are closed, and on a closed mesh
+  // (triangles sharing vertices by value) a ray that crosses the surface hits at least one of the
+  // triangles around any shared edge or vertex it passes through — no ray slips through a crack,
+  // whatever the rounding. Rays that only graze the surface (tangent at an edge or vertex) are
+  // not covered. Hits are decided on the ray's sheared, translated copy of the triangle, so near
+  // an edge the answer may differ from the exact one by float rounding (on the safe side for
+  // closed meshes). Accepted when det = U + V + W is nonzero and finite and tmin <= t <= tmax;
+  // degenerate (zero-area) triangles and rays parallel to the plane have det = 0 and never hit.
+  // A NaN or Inf in the ray's origin, direction, tmin or tmax, or in a vertex, never yields a hit
+  // or a NaN output. No FMA: the same ids and t on every ISA.
+  watertight,
+
+  // The `watertight` contract evaluated in double (no double fallback needed for zero edge
+  // functions: they are taken as on-edge, which keeps watertightness); t rounded to float at the
+  // end. Same NaN/degenerate guarantees; same results on every ISA.
+  watertight64,
 };
 
 inline constexpr Intersector kAllIntersectors[] = {Intersector::paper, Intersector::mt,
-                                                   Intersector::mt64};
+                                                   Intersector::mt64, Intersector::watertight,
+                                                   Intersector::watertight64};
 
 const char* intersector_name(Intersector i);
 std::optional<Intersector> parse_intersector(std::string_view name);
