@@ -24,6 +24,9 @@ class Bvh final : public Accelerator {
 
   Hit closest(const Ray& ray) const override;
   bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
+  // Consecutive groups of packet_width rays (16 on AVX-512, 8 on AVX2) are traversed as packets —
+  // best for coherent rays such as a 4×4 camera tile; results equal closest() ray by ray.
+  void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;
   std::size_t bytes() const override { return tris_.bytes() + tree_.bytes(); }
   const TraceConfig& config() const override { return config_; }
 

@@ -44,9 +44,11 @@ RAYVEC_INLINE typename B::RayData box_ray(const Ray& ray) {
 RAYVEC_INLINE uint32_t leaf_begin(uint32_t ref) { return (ref >> 5) & (kMaxLeafBegin - 1); }
 RAYVEC_INLINE uint32_t leaf_end(uint32_t ref) { return leaf_begin(ref) + (ref & 31u) + 1; }
 
+// Closest hit in the subtree `start` (0 = the whole tree).
 template <class B>
-void bvh_closest(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
-                 const Ray& ray, Hit& hit) {
+RAYVEC_INLINE void bvh_closest_from(const BvhArrays& bvh, const TriangleArrays& tris,
+                                    const TriangleKernels& kernels, const Ray& ray, Hit& hit,
+                                    uint32_t start) {
   constexpr int N = B::N;
   const WideNode<N>* nodes = static_cast<const WideNode<N>*>(bvh.nodes);
   const typename B::RayData r = box_ray<B>(ray);
@@ -55,7 +57,7 @@ void bvh_closest(const BvhArrays& bvh, const TriangleArrays& tris, const Triangl
                          ? local
                          : static_cast<StackItem*>(__builtin_alloca(bvh.stack_size * sizeof(StackItem)));
   uint32_t sp = 0;
-  uint32_t ref = 0;  // the root
+  uint32_t ref = start;
   float tmax = ray.tmax < hit.t ? ray.tmax : hit.t;
   for (;;) {
     if (!(ref & kLeafFlag)) {
@@ -102,6 +104,12 @@ void bvh_closest(const BvhArrays& bvh, const TriangleArrays& tris, const Triangl
     }
     ref = stack[sp].ref;
   }
+}
+
+template <class B>
+void bvh_closest(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                 const Ray& ray, Hit& hit) {
+  bvh_closest_from<B>(bvh, tris, kernels, ray, hit, 0);
 }
 
 template <class B>

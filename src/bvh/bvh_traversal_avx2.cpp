@@ -8,10 +8,12 @@
 namespace rayvec::avx2 {
 
 #include "bvh/bvh_traversal.inl"
+#include "bvh/bvh_packet.inl"
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhKernels k8{Isa::avx2, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>};
+constinit const BvhKernels k8{Isa::avx2, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
+                              &bvh_closest_packet<BoxLanes8, PacketLanes8>, 8};
 }  // namespace
 
 const BvhKernels* bvh_kernels(int width) {

@@ -8,11 +8,14 @@
 namespace rayvec::avx512 {
 
 #include "bvh/bvh_traversal.inl"
+#include "bvh/bvh_packet.inl"
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhKernels k8{Isa::avx512, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>};
-constinit const BvhKernels k16{Isa::avx512, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>};
+constinit const BvhKernels k8{Isa::avx512, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
+                              &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16};
+constinit const BvhKernels k16{Isa::avx512, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>,
+                               &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16};
 }  // namespace
 
 const BvhKernels* bvh_kernels(int width) {

@@ -11,8 +11,10 @@ namespace rayvec::scalar {
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhKernels k4{Isa::scalar, 4, &bvh_closest<BoxLanes<4>>, &bvh_occluded<BoxLanes<4>>};
-constinit const BvhKernels k8{Isa::scalar, 8, &bvh_closest<BoxLanes<8>>, &bvh_occluded<BoxLanes<8>>};
+constinit const BvhKernels k4{Isa::scalar, 4, &bvh_closest<BoxLanes<4>>, &bvh_occluded<BoxLanes<4>>,
+                              nullptr, 0};
+constinit const BvhKernels k8{Isa::scalar, 8, &bvh_closest<BoxLanes<8>>, &bvh_occluded<BoxLanes<8>>,
+                              nullptr, 0};
 }  // namespace
 
 const BvhKernels* bvh_kernels(int width) {

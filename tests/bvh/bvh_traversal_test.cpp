@@ -117,6 +117,36 @@ TEST_P(BvhTraversal, MatchesBruteForceOnTinyAndEmptyMeshes) {
   expect_same(same, rays);
 }
 
+// Packets (closest_stream) give every ray exactly its single-ray answer: coherent camera tiles,
+// incoherent random rays (the packet diverges at once), partial packets and untraceable lanes.
+TEST_P(BvhTraversal, PacketsMatchSingleRays) {
+  const TriangleMesh s = test::sphere(1.0f, 30, 40);
+  BvhOptions options;
+  options.width = GetParam().width;
+  const Bvh bvh(s, config(), options);
+  std::vector<Ray> rays;
+  for (int y = 0; y < 32; ++y)  // 4x4 tiles of a camera at z = 3 looking at the sphere
+    for (int x = 0; x < 32; ++x) {
+      const int px = (y / 4 % 8) * 4 + x % 4, py = (x / 4) * 4 + y % 4;
+      rays.push_back(Ray{{0, 0, 3}, {(px - 16) / 20.0f, (py - 16) / 20.0f, -1.0f}});
+    }
+  for (const Ray& r : test::random_rays(600, 1.5f, 13)) rays.push_back(r);
+  rays[5].org.x = std::nanf("");  // an untraceable lane inside a packet
+  rays[40].tmax = 2.5f;
+  const std::size_t n = rays.size() - 3;  // a partial packet at the end
+  std::vector<Hit> stream(n);
+  bvh.closest_stream(rays.data(), stream.data(), n);
+  int hits = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Hit single = bvh.closest(rays[i]);
+    ASSERT_EQ(single.tri, stream[i].tri) << "ray " << i;
+    ASSERT_EQ(single.t, stream[i].t) << "ray " << i;
+    ASSERT_EQ(single.u, stream[i].u) << "ray " << i;
+    hits += single.hit();
+  }
+  EXPECT_GT(hits, 200);
+}
+
 // The BVH's contract: a NaN or infinite origin or direction, or a NaN tmin/tmax, never hits.
 TEST_P(BvhTraversal, NonFiniteRaysMiss) {
   const TriangleMesh s = test::sphere(1.0f, 10, 10);

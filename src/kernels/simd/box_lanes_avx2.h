@@ -58,4 +58,51 @@ struct BoxLanes8 {
   static RAYVEC_INLINE __m256 abs_ps(__m256 a) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a); }
 };
 
+// A packet of 8 rays, one per lane, for packet traversal (bvh/bvh_packet.inl): the same slab
+// arithmetic as BoxLanes8, transposed — one child box against every lane. Each lane picks
+// its near plane by the sign of its own direction, so a lane's answer equals the single-ray test's.
+struct PacketLanes8 {
+  static constexpr int P = 8;
+  __m256 ox, oy, oz, rx, ry, rz, tmin, tmax;
+  
+
+  // From SoA arrays of P floats: o[0..2], rdir[0..2], tmin, tmax.
+  static RAYVEC_INLINE PacketLanes8 load(const float* const soa[8]) {
+    PacketLanes8 k;
+    k.ox = _mm256_loadu_ps(soa[0]); k.oy = _mm256_loadu_ps(soa[1]); k.oz = _mm256_loadu_ps(soa[2]);
+    k.rx = _mm256_loadu_ps(soa[3]); k.ry = _mm256_loadu_ps(soa[4]); k.rz = _mm256_loadu_ps(soa[5]);
+    k.tmin = _mm256_loadu_ps(soa[6]); k.tmax = _mm256_loadu_ps(soa[7]);
+    
+    return k;
+  }
+  RAYVEC_INLINE void set_tmax(const float* t) { tmax = _mm256_loadu_ps(t); }
+
+  // Lanes (within `active`) whose ray overlaps child k's box of a node with N children; tn receives
+  // each lane's entry distance.
+  template <int N>
+  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float* tn_out) const {
+    const __m256 lx = _mm256_set1_ps(b[0][k]), ly = _mm256_set1_ps(b[1][k]), lz = _mm256_set1_ps(b[2][k]);
+    const __m256 hx = _mm256_set1_ps(b[3][k]), hy = _mm256_set1_ps(b[4][k]), hz = _mm256_set1_ps(b[5][k]);
+    const __m256 tnx = _mm256_mul_ps(_mm256_sub_ps(_mm256_blendv_ps(lx, hx, rx), ox), rx);
+    const __m256 tny = _mm256_mul_ps(_mm256_sub_ps(_mm256_blendv_ps(ly, hy, ry), oy), ry);
+    const __m256 tnz = _mm256_mul_ps(_mm256_sub_ps(_mm256_blendv_ps(lz, hz, rz), oz), rz);
+    const __m256 tfx = _mm256_mul_ps(_mm256_sub_ps(_mm256_blendv_ps(hx, lx, rx), ox), rx);
+    const __m256 tfy = _mm256_mul_ps(_mm256_sub_ps(_mm256_blendv_ps(hy, ly, ry), oy), ry);
+    const __m256 tfz = _mm256_mul_ps(_mm256_sub_ps(_mm256_blendv_ps(hz, lz, rz), oz), rz);
+    __m256 tn = _mm256_max_ps(tnx, _mm256_set1_ps(-__builtin_inff()));
+    tn = _mm256_max_ps(tny, tn);
+    tn = _mm256_max_ps(tnz, tn);
+    __m256 tf = _mm256_min_ps(tfx, _mm256_set1_ps(__builtin_inff()));
+    tf = _mm256_min_ps(tfy, tf);
+    tf = _mm256_min_ps(tfz, tf);
+    const __m256 e = _mm256_set1_ps(1.0f / 262144.0f);  // kBoxEpsilon of bvh_traversal.inl
+    tn = _mm256_fnmadd_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), tn), e, tn);
+    tf = _mm256_fmadd_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), tf), e, tf);
+    const __m256 lo = _mm256_max_ps(tmin, tn);
+    const __m256 hi = _mm256_min_ps(tmax, tf);
+    _mm256_storeu_ps(tn_out, lo);
+    return (unsigned(_mm256_movemask_ps(_mm256_cmp_ps(lo, hi, _CMP_LE_OQ)))) & active;
+  }
+};
+
 }  // namespace rayvec::avx2

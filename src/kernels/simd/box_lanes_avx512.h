@@ -105,4 +105,53 @@ struct BoxLanes16 {
   }
 };
 
+// A packet of 16 rays, one per lane, for packet traversal (bvh/bvh_packet.inl): the same slab
+// arithmetic as BoxLanes16, transposed — one child box against every lane. Each lane picks
+// its near plane by the sign of its own direction, so a lane's answer equals the single-ray test's.
+struct PacketLanes16 {
+  static constexpr int P = 16;
+  __m512 ox, oy, oz, rx, ry, rz, tmin, tmax;
+  __mmask16 nx, ny, nz;  // lanes whose direction has its sign bit set
+
+  // From SoA arrays of P floats: o[0..2], rdir[0..2], tmin, tmax.
+  static RAYVEC_INLINE PacketLanes16 load(const float* const soa[8]) {
+    PacketLanes16 k;
+    k.ox = _mm512_loadu_ps(soa[0]); k.oy = _mm512_loadu_ps(soa[1]); k.oz = _mm512_loadu_ps(soa[2]);
+    k.rx = _mm512_loadu_ps(soa[3]); k.ry = _mm512_loadu_ps(soa[4]); k.rz = _mm512_loadu_ps(soa[5]);
+    k.tmin = _mm512_loadu_ps(soa[6]); k.tmax = _mm512_loadu_ps(soa[7]);
+    k.nx = _mm512_movepi32_mask(_mm512_castps_si512(k.rx));
+    k.ny = _mm512_movepi32_mask(_mm512_castps_si512(k.ry));
+    k.nz = _mm512_movepi32_mask(_mm512_castps_si512(k.rz));
+    return k;
+  }
+  RAYVEC_INLINE void set_tmax(const float* t) { tmax = _mm512_loadu_ps(t); }
+
+  // Lanes (within `active`) whose ray overlaps child k's box of a node with N children; tn receives
+  // each lane's entry distance.
+  template <int N>
+  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float* tn_out) const {
+    const __m512 lx = _mm512_set1_ps(b[0][k]), ly = _mm512_set1_ps(b[1][k]), lz = _mm512_set1_ps(b[2][k]);
+    const __m512 hx = _mm512_set1_ps(b[3][k]), hy = _mm512_set1_ps(b[4][k]), hz = _mm512_set1_ps(b[5][k]);
+    const __m512 tnx = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(nx, lx, hx), ox), rx);
+    const __m512 tny = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(ny, ly, hy), oy), ry);
+    const __m512 tnz = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(nz, lz, hz), oz), rz);
+    const __m512 tfx = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(nx, hx, lx), ox), rx);
+    const __m512 tfy = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(ny, hy, ly), oy), ry);
+    const __m512 tfz = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(nz, hz, lz), oz), rz);
+    __m512 tn = _mm512_max_ps(tnx, _mm512_set1_ps(-__builtin_inff()));
+    tn = _mm512_max_ps(tny, tn);
+    tn = _mm512_max_ps(tnz, tn);
+    __m512 tf = _mm512_min_ps(tfx, _mm512_set1_ps(__builtin_inff()));
+    tf = _mm512_min_ps(tfy, tf);
+    tf = _mm512_min_ps(tfz, tf);
+    const __m512 e = _mm512_set1_ps(1.0f / 262144.0f);  // kBoxEpsilon of bvh_traversal.inl
+    tn = _mm512_fnmadd_ps(BoxLanes16::abs_ps(tn), e, tn);
+    tf = _mm512_fmadd_ps(BoxLanes16::abs_ps(tf), e, tf);
+    const __m512 lo = _mm512_max_ps(tmin, tn);
+    const __m512 hi = _mm512_min_ps(tmax, tf);
+    _mm512_storeu_ps(tn_out, lo);
+    return (unsigned(_mm512_cmp_ps_mask(lo, hi, _CMP_LE_OQ))) & active;
+  }
+};
+
 }  // namespace rayvec::avx512

@@ -1,0 +1,92 @@
+// Packet traversal of a WideBvh for coherent rays (a 4×4 camera tile): P rays (16 on AVX-512, 8 on
+// AVX2), one per lane, walk the tree together with a mask of active lanes (Wald, Slusallek, Benthin
+// & Wagner 2001; with wide nodes as in Embree's hybrid traversal). Each child box is tested against
+// all active lanes at once; the children hit by any lane are visited front to back by the entry
+// distance of their first lane. A leaf is intersected ray by ray with the triangle kernel table, so
+// every lane gets exactly its single-ray answer. When only kSingleRayLanes or fewer lanes remain
+// active in a subtree, the packet has diverged: those lanes finish that subtree by single-ray
+// traversal (bvh_closest_from). Included by the ISA units after bvh_traversal.inl.
+
+inline constexpr int kSingleRayLanes = 2;
+
+struct PacketItem {
+  uint32_t ref;
+  uint32_t lanes;
+};
+
+// rays[0..P) with lanes `active` (the others are ignored); every active ray must be traceable.
+template <class B, class PK>
+void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
+                        const TriangleKernels& kernels, const Ray* rays, Hit* hits, unsigned active) {
+  constexpr int N = B::N;
+  constexpr int P = PK::P;
+  const WideNode<N>* nodes = static_cast<const WideNode<N>*>(bvh.nodes);
+  alignas(64) float soa[8][P];
+  for (int k = 0; k < P; ++k) {
+    const Ray& r = rays[(active >> k) & 1u ? k : __builtin_ctz(active)];
+    soa[0][k] = r.org.x; soa[1][k] = r.org.y; soa[2][k] = r.org.z;
+    soa[3][k] = 1.0f / r.dir.x; soa[4][k] = 1.0f / r.dir.y; soa[5][k] = 1.0f / r.dir.z;
+    soa[6][k] = r.tmin;
+    const float t = (active >> k) & 1u ? hits[k].t : 0.0f;
+    soa[7][k] = r.tmax < t ? r.tmax : t;
+  }
+  const float* const rows[8] = {soa[0], soa[1], soa[2], soa[3], soa[4], soa[5], soa[6], soa[7]};
+  PK pk = PK::load(rows);
+  float* tmax = soa[7];
+
+  PacketItem local[kLocalStack];
+  PacketItem* stack = bvh.stack_size <= kLocalStack
+                          ? local
+                          : static_cast<PacketItem*>(__builtin_alloca(bvh.stack_size * sizeof(PacketItem)));
+  uint32_t sp = 0;
+  uint32_t ref = 0;
+  unsigned lanes = active;
+  for (;;) {
+    if (__builtin_popcount(lanes) <= kSingleRayLanes) {  // diverged: finish ray by ray
+      for (unsigned m = lanes; m != 0; m &= m - 1) {
+        const int k = __builtin_ctz(m);
+        bvh_closest_from<B>(bvh, tris, kernels, rays[k], hits[k], ref);
+        if (hits[k].t < tmax[k]) tmax[k] = hits[k].t;
+      }
+      pk.set_tmax(tmax);
+    } else if (!(ref & kLeafFlag)) {
+      const WideNode<N>& node = nodes[ref];
+      uint32_t refs[N], masks[N];
+      float ts[N];
+      int count = 0;
+      alignas(64) float tn[P];
+      for (int c = 0; c < N && node.ref[c] != kEmptyRef; ++c) {
+        const unsigned m = pk.template hits<N>(node.bounds, c, lanes, tn);
+        if (m == 0) continue;
+        const float d = tn[__builtin_ctz(m)];
+        int j = count++;
+        while (j > 0 && ts[j - 1] < d) {  // descending: farthest first
+          refs[j] = refs[j - 1];
+          masks[j] = masks[j - 1];
+          ts[j] = ts[j - 1];
+          --j;
+        }
+        refs[j] = node.ref[c];
+        masks[j] = m;
+        ts[j] = d;
+      }
+      if (count > 0) {
+        for (int j = 0; j < count - 1; ++j) stack[sp++] = PacketItem{refs[j], masks[j]};
+        ref = refs[count - 1];
+        lanes = masks[count - 1];
+        continue;
+      }
+    } else if (ref != kEmptyRef) {
+      for (unsigned m = lanes; m != 0; m &= m - 1) {
+        const int k = __builtin_ctz(m);
+        kernels.closest(tris, leaf_begin(ref), leaf_end(ref), rays[k], hits[k]);
+        if (hits[k].t < tmax[k]) tmax[k] = hits[k].t;
+      }
+      pk.set_tmax(tmax);
+    }
+    if (sp == 0) return;
+    --sp;
+    ref = stack[sp].ref;
+    lanes = stack[sp].lanes;
+  }
+}
