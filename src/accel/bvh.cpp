@@ -21,7 +21,12 @@ Bvh::Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& 
       kernels_(&triangle_kernels(config.isa, config.intersector)),
       traversal_(&bvh_kernels(config.isa,
                               options.width ? options.width : bvh_widths(config.isa).widths[0])) {
-  const BinaryBvh binary = build_binned_sah(mesh, options.sah);
+  SahConfig sah = options.sah;
+  if (options.leaves_from_kernel && kernels_->width >= 8) {
+    sah.leaf_block = uint32_t(kernels_->width);
+    sah.max_leaf = std::min(2 * sah.leaf_block, kMaxLeafTriangles);
+  }
+  const BinaryBvh binary = build_binned_sah(mesh, sah);
   tree_ = WideBvh(binary, traversal_->width);
   tris_ = TriangleSoA(mesh, binary.order);
 }

@@ -23,6 +23,7 @@ struct Options {
   TraceOptions trace;
   bool json = false, vs_embree = false;
   int repeats = 5, width = 0;
+  int max_leaf = 0, leaf_block = 0;  // 0: the builder's defaults
 };
 
 void parse_size(const std::string& s, int& w, int& h) {
@@ -97,6 +98,17 @@ int run(const Options& o) {
 
   BvhOptions bvh_options;
   bvh_options.width = o.width;
+  if (o.max_leaf != 0) {
+    if (o.max_leaf < 1 || o.max_leaf > int(kMaxLeafTriangles))
+      throw InputError("--max-leaf: must be 1 to " + std::to_string(kMaxLeafTriangles));
+    bvh_options.sah.max_leaf = uint32_t(o.max_leaf);
+    bvh_options.leaves_from_kernel = false;
+  }
+  if (o.leaf_block != 0) {
+    if (o.leaf_block < 1 || o.leaf_block > 32) throw InputError("--leaf-block: must be 1 to 32");
+    bvh_options.sah.leaf_block = uint32_t(o.leaf_block);
+    bvh_options.leaves_from_kernel = false;
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const Bvh bvh(mesh, config, bvh_options);
   const double build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -178,7 +190,10 @@ void register_bench_rays_command(Command& bench) {
             "id mismatches; exit status 2 when rayvec was built without Embree")
       .option("--repeats", o.repeats, "timed runs per ray set after one warm-up; the median is "
                                       "reported (default 5)")
-      .option("--bvh-width", o.width, "children per BVH node: 0 = the ISA's default, 4, 8 or 16");
+      .option("--bvh-width", o.width, "children per BVH node: 0 = the ISA's default, 4, 8 or 16")
+      .option("--max-leaf", o.max_leaf, "tuning: most triangles per BVH leaf (0 = default)")
+      .option("--leaf-block", o.leaf_block,
+              "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)");
   add_trace_options(cmd, o.trace, false);
   cmd.footer(
       "Ray sets (exact definitions in src/bench/ray_sets.h): primary = a pinhole camera framing the\n"

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,10 +47,14 @@ class BvhTraversal : public ::testing::TestWithParam<Case> {
   }
 
   // Every ray through both accelerators; any-hit also with a filter ignoring even ids.
-  void expect_same(const TriangleMesh& mesh, const std::vector<Ray>& rays, SahConfig sah = {}) {
+  void expect_same(const TriangleMesh& mesh, const std::vector<Ray>& rays,
+                   std::optional<SahConfig> sah = std::nullopt) {
     const BruteForce brute(mesh, config());
     BvhOptions options;
-    options.sah = sah;
+    if (sah) {
+      options.sah = *sah;
+      options.leaves_from_kernel = false;
+    }
     options.width = GetParam().width;
     const Bvh bvh(mesh, config(), options);
     const HitFilter odd_only{[](const void*, int32_t id) { return id % 2 == 0; }, nullptr};
