@@ -2,16 +2,18 @@
 // AVX2), one per lane, walk the tree together with a mask of active lanes (Wald, Slusallek, Benthin
 // & Wagner 2001; with wide nodes as in Embree's hybrid traversal). Each child box is tested against
 // all active lanes at once; the children hit by any lane are visited front to back by the entry
-// distance of their first lane. A leaf is intersected ray by ray with the triangle kernel table, so
-// every lane gets exactly its single-ray answer. When only kSingleRayLanes or fewer lanes remain
-// active in a subtree, the packet has diverged: those lanes finish that subtree by single-ray
-// traversal (bvh_closest_from). Included by the ISA units after bvh_traversal.inl.
+// distance of their nearest lane, and dropped on pop once every lane has a nearer hit. A leaf is
+// intersected ray by ray with the triangle kernel table, so every lane gets exactly its single-ray
+// answer. When only kSingleRayLanes or fewer lanes remain active in a subtree, the packet has
+// diverged: those lanes finish that subtree by single-ray traversal (bvh_closest_from). Included
+// by the ISA units after bvh_traversal.inl.
 
 inline constexpr int kSingleRayLanes = 2;
 
 struct PacketItem {
   uint32_t ref;
   uint32_t lanes;
+  float t;  // smallest entry distance of the lanes
 };
 
 // rays[0..P) with lanes `active` (the others are ignored); every active ray must be traceable.
@@ -58,7 +60,7 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
       for (int c = 0; c < N && node.ref[c] != kEmptyRef; ++c) {
         const unsigned m = pk.template hits<N>(node.bounds, c, lanes, tn);
         if (m == 0) continue;
-        const float d = tn[__builtin_ctz(m)];
+        const float d = PK::min_lanes(tn, m);
         int j = count++;
         while (j > 0 && ts[j - 1] < d) {  // descending: farthest first
           refs[j] = refs[j - 1];
@@ -71,7 +73,7 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
         ts[j] = d;
       }
       if (count > 0) {
-        for (int j = 0; j < count - 1; ++j) stack[sp++] = PacketItem{refs[j], masks[j]};
+        for (int j = 0; j < count - 1; ++j) stack[sp++] = PacketItem{refs[j], masks[j], ts[j]};
         ref = refs[count - 1];
         lanes = masks[count - 1];
         continue;
@@ -84,8 +86,12 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
       }
       pk.set_tmax(tmax);
     }
-    if (sp == 0) return;
-    --sp;
+    // pop, dropping entries that every one of their lanes has a nearer hit than
+    for (;;) {
+      if (sp == 0) return;
+      --sp;
+      if (stack[sp].t <= pk.max_tmax(stack[sp].lanes)) break;
+    }
     ref = stack[sp].ref;
     lanes = stack[sp].lanes;
   }

@@ -76,6 +76,25 @@ struct PacketLanes8 {
     return k;
   }
   RAYVEC_INLINE void set_tmax(const float* t) { tmax = _mm256_loadu_ps(t); }
+  // The smallest of tn over `lanes` (nonzero), and the largest current tmax over `lanes`.
+  static RAYVEC_INLINE __m256 lane_mask(unsigned lanes) {
+    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    const __m256i m = _mm256_and_si256(_mm256_set1_epi32(int(lanes)), bit);
+    return _mm256_castsi256_ps(_mm256_cmpeq_epi32(m, bit));
+  }
+  static RAYVEC_INLINE float hmin(__m256 v) {
+    __m128 x = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    x = _mm_min_ps(x, _mm_movehl_ps(x, x));
+    x = _mm_min_ss(x, _mm_shuffle_ps(x, x, 1));
+    return _mm_cvtss_f32(x);
+  }
+  static RAYVEC_INLINE float min_lanes(const float* tn, unsigned lanes) {
+    return hmin(_mm256_blendv_ps(_mm256_set1_ps(__builtin_inff()), _mm256_loadu_ps(tn), lane_mask(lanes)));
+  }
+  RAYVEC_INLINE float max_tmax(unsigned lanes) const {
+    const __m256 neg = _mm256_xor_ps(tmax, _mm256_set1_ps(-0.0f));
+    return -hmin(_mm256_blendv_ps(_mm256_set1_ps(__builtin_inff()), neg, lane_mask(lanes)));
+  }
 
   // Lanes (within `active`) whose ray overlaps child k's box of a node with N children; tn receives
   // each lane's entry distance.

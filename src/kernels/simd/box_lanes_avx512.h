@@ -125,6 +125,13 @@ struct PacketLanes16 {
     return k;
   }
   RAYVEC_INLINE void set_tmax(const float* t) { tmax = _mm512_loadu_ps(t); }
+  // The smallest of tn over `lanes` (nonzero), and the largest current tmax over `lanes`.
+  static RAYVEC_INLINE float min_lanes(const float* tn, unsigned lanes) {
+    return _mm512_mask_reduce_min_ps(__mmask16(lanes), _mm512_loadu_ps(tn));
+  }
+  RAYVEC_INLINE float max_tmax(unsigned lanes) const {
+    return _mm512_mask_reduce_max_ps(__mmask16(lanes), tmax);
+  }
 
   // Lanes (within `active`) whose ray overlaps child k's box of a node with N children; tn receives
   // each lane's entry distance.
