@@ -102,10 +102,28 @@ RAYVEC_COLD void watertight_refine(unsigned lanes, V ax, V ay, V bx, V by, V cx,
   u = V::load(us); v = V::load(vs); w = V::load(ws);
 }
 
+// a·b == c·d exactly (a two-product comparison: equal rounded products and equal exact errors).
+RAYVEC_INLINE bool same_product(double a, double b, double c, double d) {
+  const double p = a * b, q = c * d;
+  return p == q && __builtin_fma(a, b, -p) == __builtin_fma(c, d, -q);
+}
+
+// True when triangle j has exactly zero area (e1 × e2 = 0 for the exact vertices). Needed because
+// shearing rounds a collinear triangle into a sliver of nonzero area in ray space. The differences
+// of floats are exact in double unless the coordinates' exponents differ by more than 29.
+RAYVEC_COLD bool zero_area(const TriangleArrays& T, uint32_t j) {
+  const double e1x = double(T.v1x[j]) - T.v0x[j], e1y = double(T.v1y[j]) - T.v0y[j],
+               e1z = double(T.v1z[j]) - T.v0z[j];
+  const double e2x = double(T.v2x[j]) - T.v0x[j], e2y = double(T.v2y[j]) - T.v0y[j],
+               e2z = double(T.v2z[j]) - T.v0z[j];
+  return same_product(e1y, e2z, e1z, e2y) && same_product(e1z, e2x, e1x, e2z) &&
+         same_product(e1x, e2y, e1y, e2x);
+}
+
 // The lanes of triangles [i, i + W) that the ray hits with tmin <= t < tlimit.
 template <class V>
-RAYVEC_INLINE LaneHits<V> test_watertight(const WatertightRay<V>& r, uint32_t i,
-                                          typename V::Mask active, V tlimit) {
+RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const WatertightRay<V>& r,
+                                          uint32_t i, typename V::Mask active, V tlimit) {
   using S = typename V::Scalar;
   LaneHits<V> out;
   // translate to the ray origin (exact vertices), z stays unsheared until needed
@@ -150,6 +168,17 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const WatertightRay<V>& r, uint32_t i,
                            mul_rounded(w, mul_rounded(r.sz, cz)), sign);
   out.t = tn / adet;
   out.mask = out.mask & (out.t >= r.tmin) & (out.t < tlimit);
+  if (any(out.mask)) {
+    // zero-area triangles never hit (checked only for the rare lanes that would hit)
+    float keep[V::W];
+    unsigned dropped = 0;
+    for (int k = 0; k < V::W; ++k) keep[k] = 1.0f;
+    for (unsigned lanes = bits(out.mask); lanes != 0; lanes &= lanes - 1) {
+      const int k = __builtin_ctz(lanes);
+      if (zero_area(T, i + unsigned(k))) { keep[k] = 0.0f; dropped = 1; }
+    }
+    if (dropped) out.mask = out.mask & (V::load(keep) > zero);
+  }
   if (any(out.mask)) {  // barycentrics of v1 and v2: V and W weight them
     out.u = xor_bits(v, sign) / adet;
     out.v = xor_bits(w, sign) / adet;
@@ -170,7 +199,7 @@ void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, c
   V best_u = V::broadcast(S(0)), best_v = best_u, best_idx = best_u;
   bool found = false;
   for (uint32_t i = begin; i < end; i += W) {
-    const LaneHits<V> h = test_watertight<V>(r, i, first_lanes(V{}, end - i), best_t);
+    const LaneHits<V> h = test_watertight<V>(T, r, i, first_lanes(V{}, end - i), best_t);
     if (any(h.mask)) {  // blend nearest t, u, v and triangle index
       best_t = select(h.mask, best_t, h.t);
       best_u = select(h.mask, best_u, h.u);
@@ -206,7 +235,7 @@ bool watertight_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, 
   const WatertightRay<V> r = watertight_ray<V>(T, ray);
   const V tlimit = V::broadcast(next_up(S(ray.tmax)));
   for (uint32_t i = begin; i < end; i += V::W) {
-    const typename V::Mask m = test_watertight<V>(r, i, first_lanes(V{}, end - i), tlimit).mask;
+    const typename V::Mask m = test_watertight<V>(T, r, i, first_lanes(V{}, end - i), tlimit).mask;
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
