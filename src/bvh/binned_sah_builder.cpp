@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 #include "scene/mesh.h"
 
@@ -12,92 +13,154 @@ namespace rayvec {
 namespace {
 
 constexpr int kMaxBins = 64;
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr uint32_t kParallelBinning = 1u << 16;  // ranges this large bin in parallel chunks
+constexpr int kBinningChunks = 4;
 
-struct Bin {
-  BBox box;
+// One triangle's box and id, moved (not indexed) by the partitions so every pass reads memory in
+// order — random access through an index array was the builder's bottleneck.
+struct alignas(32) Prim {
+  float lo[3];
+  uint32_t id;
+  float hi[3];
+  float pad;
+  float centroid(int a) const { return (lo[a] + hi[a]) * 0.5f; }
+};
+
+// min/max that keep the first operand when the second is NaN (a NaN vertex never widens a box);
+// branch-free (minss/maxss).
+float min_keep(float a, float b) { return b < a ? b : a; }
+float max_keep(float a, float b) { return b > a ? b : a; }
+
+struct BinBox {
+  float lo[3] = {kInf, kInf, kInf};
+  float hi[3] = {-kInf, -kInf, -kInf};
   uint32_t count = 0;
+  void grow(const Prim& p) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = min_keep(lo[a], p.lo[a]);
+      hi[a] = max_keep(hi[a], p.hi[a]);
+    }
+    ++count;
+  }
+  void grow(const BinBox& b) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = min_keep(lo[a], b.lo[a]);
+      hi[a] = max_keep(hi[a], b.hi[a]);
+    }
+    count += b.count;
+  }
+  BBox box() const { return BBox{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+  float half_area() const { return box().half_area(); }
+};
+
+// Bins of all three axes over one range of primitives.
+struct Bins {
+  BinBox bin[3][kMaxBins];
 };
 
 struct Split {
   int axis = -1;
   int bin = 0;  // primitives in bins [0, bin] go left
-  float cost = std::numeric_limits<float>::infinity();
+  float cost = kInf;
   BBox left, right;
 };
+
+// Bin of a centroid coordinate; NaN and out-of-range values are clamped to the end bins.
+int bin_of(float c, float lo, float scale, int bins) {
+  const float f = (c - lo) * scale;
+  if (!(f > 0.0f)) return 0;
+  return f >= float(bins - 1) ? bins - 1 : int(f);
+}
 
 class Builder {
  public:
   Builder(const TriangleMesh& mesh, const SahConfig& config, BinaryBvh& out)
-      : config_(config), out_(out) {
+      : config_(config), bins_(std::clamp(config.bins, 2, kMaxBins)), out_(out) {
     const std::size_t n = mesh.size();
-    boxes_.resize(n);
-    centroids_.resize(n);
+    prims_.resize(n);
     out_.order.resize(n);
     const auto count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static)
     for (std::int64_t i = 0; i < count; ++i) {
-      BBox b;
-      for (int c = 0; c < 3; ++c) b.grow(mesh.vertex(std::size_t(i), c));
-      boxes_[i] = b;
-      centroids_[i] = b.center();
-      out_.order[i] = static_cast<uint32_t>(i);
+      BinBox b;
+      for (int c = 0; c < 3; ++c) {
+        const Vec3f v = mesh.vertex(std::size_t(i), c);
+        for (int a = 0; a < 3; ++a) {
+          b.lo[a] = min_keep(b.lo[a], v[a]);
+          b.hi[a] = max_keep(b.hi[a], v[a]);
+        }
+      }
+      prims_[i] = Prim{{b.lo[0], b.lo[1], b.lo[2]}, uint32_t(i), {b.hi[0], b.hi[1], b.hi[2]}, 0.0f};
     }
     // at most 2n - 1 nodes; children are allocated in pairs
     out_.nodes.resize(n == 0 ? 0 : 2 * n - 1);
-    next_node_.store(1);
   }
 
   void run() {
-    if (boxes_.empty()) return;
-    BBox root;
-    for (const BBox& b : boxes_) root.grow(b);
+    if (prims_.empty()) return;
+    BinBox root;
+    for (const Prim& p : prims_) root.grow(p);
 #pragma omp parallel
 #pragma omp single nowait
-    build(0, 0, static_cast<uint32_t>(boxes_.size()), root, 0);
+    build(0, 0, static_cast<uint32_t>(prims_.size()), root.box(), 0);
     out_.nodes.resize(next_node_.load());
   }
 
  private:
-  // Bin of a centroid coordinate; NaN and out-of-range values are clamped to the end bins.
-  static int bin_of(float c, float lo, float scale, int bins) {
-    const float f = (c - lo) * scale;
-    if (!(f > 0.0f)) return 0;
-    const int k = f >= float(bins) ? bins - 1 : int(f);
-    return k < bins - 1 ? k : bins - 1;
+  struct Range {
+    float lo[3], scale[3];
+  };
+
+  void bin_range(uint32_t begin, uint32_t end, const Range& r, Bins& out) const {
+    for (uint32_t i = begin; i < end; ++i) {
+      const Prim& p = prims_[i];
+      for (int a = 0; a < 3; ++a) out.bin[a][bin_of(p.centroid(a), r.lo[a], r.scale[a], bins_)].grow(p);
+    }
   }
 
-  Split find_split(uint32_t begin, uint32_t end, const BBox& cbox, int bins) const {
-    Split best;
+  Split find_split(uint32_t begin, uint32_t end, const BBox& cbox) const {
     const Vec3f ext = cbox.extent();
+    Range r;
+    for (int a = 0; a < 3; ++a) {
+      r.lo[a] = cbox.lo[a];
+      r.scale[a] = ext[a] > 0.0f ? float(bins_) / ext[a] : 0.0f;
+    }
+    Bins bins;
+    if (end - begin >= kParallelBinning) {  // the top of the tree: bin chunks as tasks, merge
+      Bins part[kBinningChunks];
+      const uint32_t step = (end - begin + kBinningChunks - 1) / kBinningChunks;
+      for (int c = 0; c < kBinningChunks; ++c) {
+        const uint32_t b = begin + uint32_t(c) * step, e = std::min(end, b + step);
+#pragma omp task shared(part, r) firstprivate(b, e, c)
+        bin_range(b, e, r, part[c]);
+      }
+#pragma omp taskwait
+      for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < bins_; ++k)
+          for (int c = 0; c < kBinningChunks; ++c) bins.bin[a][k].grow(part[c].bin[a][k]);
+    } else {
+      bin_range(begin, end, r, bins);
+    }
+    Split best;
     for (int axis = 0; axis < 3; ++axis) {
       if (!(ext[axis] > 0.0f)) continue;
-      const float scale = float(bins) / ext[axis];
-      Bin bin[kMaxBins];
-      for (uint32_t i = begin; i < end; ++i) {
-        const uint32_t p = out_.order[i];
-        Bin& b = bin[bin_of(centroids_[p][axis], cbox.lo[axis], scale, bins)];
-        b.box.grow(boxes_[p]);
-        ++b.count;
-      }
+      const BinBox* bin = bins.bin[axis];
       // sweep from the right, then from the left
       float right_area[kMaxBins];
       uint32_t right_count[kMaxBins];
-      BBox acc;
-      uint32_t n = 0;
-      for (int k = bins - 1; k > 0; --k) {
-        acc.grow(bin[k].box);
-        n += bin[k].count;
+      BinBox acc;
+      for (int k = bins_ - 1; k > 0; --k) {
+        acc.grow(bin[k]);
         right_area[k] = acc.half_area();
-        right_count[k] = n;
+        right_count[k] = acc.count;
       }
-      BBox left;
-      uint32_t nl = 0;
-      for (int k = 0; k < bins - 1; ++k) {
-        left.grow(bin[k].box);
-        nl += bin[k].count;
+      BinBox left;
+      for (int k = 0; k < bins_ - 1; ++k) {
+        left.grow(bin[k]);
         const uint32_t nr = right_count[k + 1];
-        if (nl == 0 || nr == 0) continue;
-        const float cost = left.half_area() * leaf_cost(nl) + right_area[k + 1] * leaf_cost(nr);
+        if (left.count == 0 || nr == 0) continue;
+        const float cost = left.half_area() * leaf_cost(left.count) + right_area[k + 1] * leaf_cost(nr);
         if (cost < best.cost) {
           best.cost = cost;
           best.axis = axis;
@@ -105,9 +168,10 @@ class Builder {
         }
       }
       if (best.axis == axis) {  // boxes of the chosen split
-        best.left = BBox{};
-        best.right = BBox{};
-        for (int k = 0; k < bins; ++k) (k <= best.bin ? best.left : best.right).grow(bin[k].box);
+        BinBox l, rr;
+        for (int k = 0; k < bins_; ++k) (k <= best.bin ? l : rr).grow(bin[k]);
+        best.left = l.box();
+        best.right = rr.box();
       }
     }
     return best;
@@ -118,32 +182,41 @@ class Builder {
   }
 
   void make_leaf(uint32_t node, uint32_t begin, uint32_t end, const BBox& box) {
+    for (uint32_t i = begin; i < end; ++i) out_.order[i] = prims_[i].id;
     std::sort(out_.order.begin() + begin, out_.order.begin() + end);  // ids increase in a leaf
     out_.nodes[node] = BinaryNode{box, begin, end - begin};
+  }
+
+  BBox range_box(uint32_t begin, uint32_t end, bool centroids) const {
+    BinBox b;
+    for (uint32_t i = begin; i < end; ++i) {
+      const Prim& p = prims_[i];
+      for (int a = 0; a < 3; ++a) {
+        const float lo = centroids ? p.centroid(a) : p.lo[a], hi = centroids ? p.centroid(a) : p.hi[a];
+        b.lo[a] = min_keep(b.lo[a], lo);
+        b.hi[a] = max_keep(b.hi[a], hi);
+      }
+    }
+    return b.box();
   }
 
   void build(uint32_t node, uint32_t begin, uint32_t end, const BBox& box, int depth) {
     const uint32_t n = end - begin;
     if (n <= 1) return make_leaf(node, begin, end, box);
-    BBox cbox;
-    for (uint32_t i = begin; i < end; ++i) cbox.grow(centroids_[out_.order[i]]);
+    const BBox cbox = range_box(begin, end, true);
 
     uint32_t mid = begin;
     BBox left_box, right_box;
-    const Split split = depth < config_.max_sah_depth
-                            ? find_split(begin, end, cbox, std::clamp(config_.bins, 2, kMaxBins))
-                            : Split{};
+    const Split split = depth < config_.max_sah_depth ? find_split(begin, end, cbox) : Split{};
     if (split.axis >= 0) {
       const float area = box.half_area();
       const float split_cost = config_.traversal_cost + (area > 0.0f ? split.cost / area : 0.0f);
       if (n <= config_.max_leaf && leaf_cost(n) <= split_cost) return make_leaf(node, begin, end, box);
       const int axis = split.axis;
-      const int bins = std::clamp(config_.bins, 2, kMaxBins);
-      const float scale = float(bins) / cbox.extent()[axis];
-      const float lo = cbox.lo[axis];
-      auto* first = out_.order.data() + begin;
-      auto* pivot = std::partition(first, out_.order.data() + end, [&](uint32_t p) {
-        return bin_of(centroids_[p][axis], lo, scale, bins) <= split.bin;
+      const float lo = cbox.lo[axis], scale = float(bins_) / cbox.extent()[axis];
+      Prim* first = prims_.data() + begin;
+      Prim* pivot = std::partition(first, prims_.data() + end, [&](const Prim& p) {
+        return bin_of(p.centroid(axis), lo, scale, bins_) <= split.bin;
       });
       mid = begin + uint32_t(pivot - first);
       left_box = split.left;
@@ -157,13 +230,13 @@ class Builder {
       const Vec3f e = cbox.extent();
       const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
       mid = begin + n / 2;
-      std::nth_element(out_.order.begin() + begin, out_.order.begin() + mid,
-                       out_.order.begin() + end, [&](uint32_t a, uint32_t b) {
-                         const float ca = centroids_[a][axis], cb = centroids_[b][axis];
-                         return ca < cb || (ca == cb && a < b);
+      std::nth_element(prims_.begin() + begin, prims_.begin() + mid, prims_.begin() + end,
+                       [&](const Prim& a, const Prim& b) {
+                         const float ca = a.centroid(axis), cb = b.centroid(axis);
+                         return ca < cb || (ca == cb && a.id < b.id);
                        });
-      left_box = range_box(begin, mid);
-      right_box = range_box(mid, end);
+      left_box = range_box(begin, mid, false);
+      right_box = range_box(mid, end, false);
     }
     const uint32_t left = next_node_.fetch_add(2);
     out_.nodes[node] = BinaryNode{box, left, 0};
@@ -178,16 +251,10 @@ class Builder {
     }
   }
 
-  BBox range_box(uint32_t begin, uint32_t end) const {
-    BBox b;
-    for (uint32_t i = begin; i < end; ++i) b.grow(boxes_[out_.order[i]]);
-    return b;
-  }
-
   const SahConfig& config_;
+  const int bins_;
   BinaryBvh& out_;
-  std::vector<BBox> boxes_;
-  std::vector<Vec3f> centroids_;
+  std::vector<Prim> prims_;
   std::atomic<uint32_t> next_node_{1};
 };
 
