@@ -1,5 +1,7 @@
 #include "accel/brute_force.h"
 
+#include "kernels/closest_batch.h"
+
 namespace rayvec {
 
 BruteForce::BruteForce(const TriangleMesh& mesh, const TraceConfig& config)
@@ -9,6 +11,11 @@ Hit BruteForce::closest(const Ray& ray) const {
   Hit hit;
   kernels_->closest(tris_.arrays(), 0, tris_.size(), ray, hit);
   return hit;
+}
+
+void BruteForce::closest_stream(const Ray* rays, Hit* hits, std::size_t n) const {
+  for (std::size_t k = 0; k < n; ++k) hits[k] = Hit{};
+  closest_batch(*kernels_, tris_.arrays(), 0, tris_.size(), rays, hits, n);
 }
 
 bool BruteForce::occluded(const Ray& ray, const HitFilter* filter) const {

@@ -12,6 +12,8 @@ class BruteForce final : public Accelerator {
 
   Hit closest(const Ray& ray) const override;
   bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
+  // Cache-blocked over the triangles (closest_batch): every ray of the batch per triangle chunk.
+  void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;
   std::size_t bytes() const override { return tris_.bytes(); }
   const TraceConfig& config() const override { return config_; }
 

@@ -60,7 +60,7 @@ std::vector<const PaperModel*> chosen_models(const std::string& list) {
 }
 
 void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
-  std::printf("\nTable 1 (one thread; seconds are medians)%s\n",
+  std::printf("\nTable 1 (one thread; seconds: median thread CPU time)%s\n",
               divisor > 1 ? (" — rays scaled: image side / " + std::to_string(divisor) + ", rays / " +
                              std::to_string(divisor * divisor) + " (approx.)").c_str()
                           : " — full paper sizes");
@@ -105,6 +105,7 @@ void print_scaling(const std::vector<ScalingResult>& rows, uint32_t divisor) {
   std::printf("\nThread scaling (section 5.2): 16,777,216 rays scaled to %u (image side 4096 / %u = "
               "%u, rays / %u)\n",
               side * side, divisor, side, divisor * divisor);
+  std::printf("(wall-clock seconds, median)\n");
   std::printf("%6s %-11s %7s %9s %8s %8s %9s\n", "tris", "intersector", "threads", "seconds",
               "speedup", "G/s", "mismatch");
   double base = 0;

@@ -1,6 +1,7 @@
 #include "bench/paper_bench.h"
 
 #include <omp.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -38,15 +39,26 @@ namespace {
 
 constexpr std::size_t kChunk = 64;  // rays per closest_stream call (and per OpenMP work item)
 
+// Seconds on the wall clock, or on this thread's CPU-time clock: one-thread runs are timed by the
+// latter, which does not count time the thread spends descheduled while other processes share the
+// machine (on an idle machine the two agree).
+double now(bool thread_cpu) {
+  if (!thread_cpu)
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 // Runs `fn` once, then again until `min_seconds` have passed in total (at most 15 runs); the median.
 template <typename Fn>
-Timing time_median(double min_seconds, Fn&& fn) {
+Timing time_median(double min_seconds, bool thread_cpu, Fn&& fn) {
   std::vector<double> runs;
   double total = 0;
   do {
-    const auto start = std::chrono::steady_clock::now();
+    const double start = now(thread_cpu);
     fn();
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double s = now(thread_cpu) - start;
     runs.push_back(s);
     total += s;
   } while (total < min_seconds && runs.size() < 15);
@@ -107,12 +119,12 @@ Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, boo
   {
     say("vectorized (paper)");
     const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, Intersector::paper});
-    out.vec_paper = time_median(min_seconds, [&] { trace_vectorized(*accel, rays, vec_paper, 1); });
+    out.vec_paper = time_median(min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_paper, 1); });
   }
   {
     say("vectorized (mt)");
     const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, Intersector::mt});
-    out.vec_mt = time_median(min_seconds, [&] { trace_vectorized(*accel, rays, vec_mt, 1); });
+    out.vec_mt = time_median(min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_mt, 1); });
   }
   for (std::size_t i = 0; i < n; ++i) out.mt_differences += vec_mt[i].tri != vec_paper[i].tri;
   if (!baselines) return out;
@@ -121,12 +133,12 @@ Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, boo
   {
     say("original");
     const PaperAosTriangles aos = paper_aos_triangles(mesh);
-    out.original = time_median(min_seconds, [&] { closest_original(aos, rays, 0, n, original); });
+    out.original = time_median(min_seconds, true, [&] { closest_original(aos, rays, 0, n, original); });
   }
   {
     say("optimized");
     const PaperSoaTriangles soa = paper_soa_triangles(mesh);
-    out.optimized = time_median(min_seconds, [&] { closest_optimized(soa, batch, 0, n, optimized); });
+    out.optimized = time_median(min_seconds, true, [&] { closest_optimized(soa, batch, 0, n, optimized); });
   }
   for (std::size_t i = 0; i < n; ++i)
     out.mismatches += !same_hit(original[i], vec_paper[i]) || !same_hit(optimized[i], vec_paper[i]);
@@ -151,7 +163,7 @@ std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa is
     r.threads = uint32_t(threads);
     r.intersector = intersector;
     std::vector<Hit>& dst = threads == 1 ? reference : hits;
-    r.time = time_median(min_seconds, [&] { trace_vectorized(*accel, rays, dst, threads); });
+    r.time = time_median(min_seconds, false, [&] { trace_vectorized(*accel, rays, dst, threads); });
     if (threads > 1)
       for (std::size_t i = 0; i < rays.size(); ++i) r.mismatches += !same_hit(hits[i], reference[i]);
     out.push_back(r);

@@ -26,7 +26,9 @@ inline constexpr uint32_t kPaperScalingSide = 4096;
 inline constexpr uint32_t kPaperScalingTriangles[3] = {2000, 10000, 50000};
 
 // A timing: the median of `repeats` runs (short runs are repeated so the clock's resolution and
-// noise from other processes matter less).
+// noise from other processes matter less). Table 1 (one thread) is timed on the thread's CPU-time
+// clock, so other processes on a shared machine inflate it less; the scaling run on the wall clock,
+// since only wall time shows what threads gain.
 struct Timing {
   double seconds = 0;
   int repeats = 0;

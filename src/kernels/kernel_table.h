@@ -32,6 +32,11 @@ struct TriangleKernels {
   // is not ignored by it). filter may be null.
   bool (*occluded)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray& ray,
                    const HitFilter* filter);
+
+  // Optional (may be null): `closest` for two rays at once, rays[0..1] and hits[0..1], loading each
+  // triangle step once for both. Same results as two `closest` calls. Used by closest_batch.
+  void (*closest_pair)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray* rays,
+                       Hit* hits) = nullptr;
 };
 
 // The table for an ISA the CPU supports (checked by the caller through isa_supported).

@@ -8,7 +8,10 @@
 // a final lane reduction. Departures: precomputed edges (v0, e1, e2), FMA, a division-free
 // barycentric test (the sign of det folded into u and v) with one correctly rounded division for t
 // only when a lane survives, u and v tracked per lane, ordered comparisons so NaN never hits, and
-// ties resolved towards the lower triangle id.
+// ties resolved towards the lower triangle id. The float `mt` path (closest_mt_float, below) goes
+// further: precomputed normal, a conservative division-free depth pre-test against the nearest hit
+// of any lane, divisions only for the final hit, and two rays per triangle load (closest_pair).
+// Each choice and what it measured: docs/benchmarks.md, "Brute-force kernel".
 
 template <class V>
 struct RayLanes {
@@ -181,7 +184,193 @@ bool occluded_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const 
   return false;
 }
 
+// ---- `mt` in float: the brute-force hot path --------------------------------------------------
+// Möller–Trumbore rewritten with the scalar triple product identities in the form Embree's
+// Moeller intersector uses, over the precomputed normal ng = e2 × e1 and s = v0 − o, c = s × d:
+//   det = d · ng,  u·det = −(e2 · c),  v·det = e1 · c,  t·det = s · ng
+// — one cross product per ray and triangle instead of two (21 multiply/adds instead of 27). The sign
+// of det is folded into the three numerators (division-free, closed edge tests as before). The
+// depth test is split: a conservative division-free pre-test t·|det| < best·(1 + 2^-20)·|det|
+// (and >= tmin·(1 − 2^-20)·|det|) that every lane which could be nearer passes, then — only for
+// steps where a lane passed — the exact t = (t·|det|)/|det| and the exact tmin <= t < best test. So
+// the one correctly rounded division is kept, but almost no step pays for it, and u and v are only
+// divided once, for the final hit.
+
+template <class V>
+struct MtNumerators {
+  typename V::Mask mask;  // lanes passing the edge tests and the conservative depth pre-test
+  V un, vn, tn, adet;     // u·|det|, v·|det|, t·|det| (all >= 0 on a hit), |det|
+};
+
+template <class V, bool TminZero>
+RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
+                                            typename V::Mask active, V lo, V hi) {
+  MtNumerators<V> out;
+  // s = v0 − o, c = s × d
+  const V sx = V::load(T.v0x + i) - r.ox, sy = V::load(T.v0y + i) - r.oy, sz = V::load(T.v0z + i) - r.oz;
+  const V cx = fmsub(sy, r.dz, sz * r.dy);
+  const V cy = fmsub(sz, r.dx, sx * r.dz);
+  const V cz = fmsub(sx, r.dy, sy * r.dx);
+  // det = d · ng
+  const V ngx = V::load(T.ngx + i), ngy = V::load(T.ngy + i), ngz = V::load(T.ngz + i);
+  const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
+  const V sign = sign_bit(det);
+  out.adet = abs(det);
+  // numerators with the sign of det folded in; un = u·|det| (the negation folded into its sign)
+  const V e2x = V::load(T.e2x + i), e2y = V::load(T.e2y + i), e2z = V::load(T.e2z + i);
+  out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), xor_bits(sign, V::broadcast(-0.0f)));
+  const V e1x = V::load(T.e1x + i), e1y = V::load(T.e1y + i), e1z = V::load(T.e1z + i);
+  out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
+  out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
+  // edge tests (closed) and the depth pre-test; ordered compares reject NaN, and |det| = 0 fails
+  // the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN)
+  const V zero = V::broadcast(0.0f);
+  out.mask = active & (out.un >= zero) & (out.vn >= zero) & (out.un + out.vn <= out.adet) &
+             (out.tn < hi * out.adet);
+  if constexpr (TminZero) out.mask = out.mask & (out.tn >= zero);  // no multiply for tmin = 0
+  else out.mask = out.mask & (out.tn >= lo * out.adet);
+  return out;
+}
+
+// Widening factors of the pre-test: 2^-20 covers the float rounding of best·(1 + 2^-20)·|det| and
+// of t = tn/|det| (2^-24 each) with room to spare.
+inline constexpr float kMtWiden = 1.0f + 0x1p-20f, kMtNarrow = 1.0f - 0x1p-20f;
+
+// The pre-test's lower factor for tmin: every t >= tmin has tn >= lo·|det|.
+RAYVEC_INLINE float mt_lower(float tmin) {
+  if (tmin > 0.0f) return tmin * kMtNarrow;
+  return tmin == 0.0f ? 0.0f : -__builtin_inff();
+}
+
+// Per-lane best hit of closest_mt_float, plus the pre-test threshold `hi`, which is shared by all
+// lanes: the nearest t found so far in ANY lane, widened. A triangle behind the ray's nearest hit
+// can never win, whatever its lane, so sharing the threshold makes the exact stage (and its
+// mispredicted branch) run about log(hits) times per ray instead of that many times per lane.
+template <class V>
+struct MtBest {
+  V t, hi, un, vn, adet, idx;
+  bool found;
+};
+
+template <class V, bool TminZero>
+RAYVEC_INLINE void mt_closest_step(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
+                                   typename V::Mask active, V lo, MtBest<V>& b) {
+  const MtNumerators<V> c = mt_numerators<V, TminZero>(T, i, r, active, lo, b.hi);
+  if (!any(c.mask)) return;
+  // exact depth test, only for steps where a lane may be nearer; ties go to the lower id later
+  const V t = c.tn / c.adet;
+  const typename V::Mask m = c.mask & (t >= r.tmin) & (t < b.t);
+  if (!any(m)) return;
+  b.t = select(m, b.t, t);
+  b.un = select(m, b.un, c.un);
+  b.vn = select(m, b.vn, c.vn);
+  b.adet = select(m, b.adet, c.adet);
+  b.idx = select(m, b.idx, V::index_bits(i));
+  b.hi = V::broadcast(hmin(b.t) * kMtWiden);
+  b.found = true;
+}
+
+// The winner among the lanes of `b` (nearest t, then lowest id) replaces `hit` if nearer; u and v
+// are divided once, here.
+template <class V>
+RAYVEC_INLINE void mt_finish(const TriangleArrays& T, const MtBest<V>& b, float initial, Hit& hit) {
+  constexpr int W = V::W;
+  if (!b.found) return;
+  float ts[W], us[W], vs[W], as[W];
+  int64_t idx[W];
+  b.t.store(ts); b.un.store(us); b.vn.store(vs); b.adet.store(as); b.idx.store_index(idx);
+  int k_best = -1;
+  for (int k = 0; k < W; ++k) {
+    if (!(ts[k] < initial)) continue;
+    if (k_best < 0 || ts[k] < ts[k_best] ||
+        (ts[k] == ts[k_best] && T.id[idx[k]] < T.id[idx[k_best]]))
+      k_best = k;
+  }
+  if (k_best < 0) return;
+  const float t = ts[k_best];
+  const int32_t id = T.id[idx[k_best]];
+  if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri)))
+    hit = Hit{t, us[k_best] / as[k_best], vs[k_best] / as[k_best], id};
+}
+
+// One ray's constants and running best.
+template <class V>
+struct MtRay {
+  RayLanes<V> r;
+  V lo;
+  float initial;  // lanes still at `initial` have no hit
+  MtBest<V> b;
+};
+
+template <class V>
+RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
+  const float limit = ray.tmax < hit.t ? ray.tmax : hit.t;
+  const float initial = next_up(limit);
+  const V zero = V::broadcast(0.0f);
+  return MtRay<V>{broadcast_ray<V>(ray), V::broadcast(mt_lower(ray.tmin)), initial,
+                  MtBest<V>{V::broadcast(initial), V::broadcast(initial * kMtWiden), zero, zero,
+                            zero, zero, false}};
+}
+
+// R rays (1 or 2) against [begin, end): each triangle step is loaded once for all R rays.
+template <class V, bool TminZero, int R>
+void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
+                           Hit* hits) {
+  constexpr int W = V::W;
+  MtRay<V> q[R];
+  for (int k = 0; k < R; ++k) q[k] = mt_ray<V>(rays[k], hits[k]);
+  // full steps without a lane mask, then the partial last step
+  const typename V::Mask all = first_lanes(V{}, W);
+  uint32_t i = begin;
+  for (; end - i >= uint32_t(W) && i < end; i += W)
+    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero>(T, i, q[k].r, all, q[k].lo, q[k].b);
+  if (i < end)
+    for (int k = 0; k < R; ++k)
+      mt_closest_step<V, TminZero>(T, i, q[k].r, first_lanes(V{}, end - i), q[k].lo, q[k].b);
+  for (int k = 0; k < R; ++k) mt_finish<V>(T, q[k].b, q[k].initial, hits[k]);
+}
+
+// tmin = 0 (camera and most secondary rays) drops the multiply of the lower depth pre-test.
+template <class V>
+void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+  if (ray.tmin == 0.0f) closest_mt_float_rays<V, true, 1>(T, begin, end, &ray, &hit);
+  else closest_mt_float_rays<V, false, 1>(T, begin, end, &ray, &hit);
+}
+
+template <class V>
+void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
+                           Hit* hits) {
+  if (rays[0].tmin == 0.0f && rays[1].tmin == 0.0f)
+    closest_mt_float_rays<V, true, 2>(T, begin, end, rays, hits);
+  else
+    closest_mt_float_rays<V, false, 2>(T, begin, end, rays, hits);
+}
+
+template <class V>
+bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
+                       const HitFilter* filter) {
+  const RayLanes<V> r = broadcast_ray<V>(ray);
+  const V lo = V::broadcast(mt_lower(ray.tmin));
+  const float limit = next_up(ray.tmax);
+  const V tlimit = V::broadcast(limit), hi = V::broadcast(limit * kMtWiden);
+  for (uint32_t i = begin; i < end; i += V::W) {
+    const MtNumerators<V> c = mt_numerators<V, false>(T, i, r, first_lanes(V{}, end - i), lo, hi);
+    if (!any(c.mask)) continue;
+    const V t = c.tn / c.adet;
+    const typename V::Mask m = c.mask & (t >= r.tmin) & (t < tlimit);
+    if (!any(m)) continue;
+    if (!filter) return true;
+    for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
+      if (!filter->ignore(filter->context, T.id[i + unsigned(__builtin_ctz(lanes))])) return true;
+  }
+  return false;
+}
+
 template <class V, Intersector I>
 constexpr TriangleKernels make_kernels(Isa isa) {
-  return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
+  if constexpr (I == Intersector::mt && sizeof(typename V::Scalar) == 4)
+    return TriangleKernels{isa, I, V::W, &closest_mt_float<V>, &occluded_mt_float<V>,
+                           &closest_pair_mt_float<V>};
+  else
+    return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
 }

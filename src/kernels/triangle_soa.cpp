@@ -9,7 +9,7 @@
 namespace rayvec {
 namespace {
 
-constexpr int kFloatArrays = 15;
+constexpr int kFloatArrays = 18;
 
 template <typename T>
 T* aligned_zeroed(std::size_t n) {
@@ -39,14 +39,14 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
   for (uint32_t i = 0; i < count_; ++i) {
     const uint32_t tri = order.empty() ? i : order[i];
     const Vec3f p0 = mesh.vertex(tri, 0), p1 = mesh.vertex(tri, 1), p2 = mesh.vertex(tri, 2);
-    const Vec3f e1 = p1 - p0, e2 = p2 - p0;
-    const float values[kFloatArrays] = {p0.x, p0.y, p0.z, e1.x, e1.y, e1.z, e2.x, e2.y,
-                                        e2.z, p1.x, p1.y, p1.z, p2.x, p2.y, p2.z};
+    const Vec3f e1 = p1 - p0, e2 = p2 - p0, ng = cross(e2, e1);
+    const float values[kFloatArrays] = {p0.x, p0.y, p0.z, e1.x, e1.y, e1.z, e2.x, e2.y, e2.z,
+                                        p1.x, p1.y, p1.z, p2.x, p2.y, p2.z, ng.x, ng.y, ng.z};
     for (int k = 0; k < kFloatArrays; ++k) a[k][i] = values[k];
     ids[i] = static_cast<int32_t>(tri);
   }
-  arrays_ = TriangleArrays{a[0], a[1],  a[2],  a[3],  a[4],  a[5],  a[6], a[7],
-                           a[8], a[9], a[10], a[11], a[12], a[13], a[14], ids, count_};
+  arrays_ = TriangleArrays{a[0],  a[1],  a[2],  a[3],  a[4],  a[5],  a[6],  a[7],  a[8],  a[9],
+                           a[10], a[11], a[12], a[13], a[14], a[15], a[16], a[17], ids, count_};
 }
 
 std::size_t TriangleSoA::bytes() const {

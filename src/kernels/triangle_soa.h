@@ -1,7 +1,7 @@
 // TriangleSoA: triangles as structure-of-arrays, the layout of Sena et al. (2018) — one array per
 // coordinate, so W consecutive triangles load as one SIMD register per coordinate.
 // Departures from the paper: edges e1 = v1 − v0 and e2 = v2 − v0 are precomputed (the float kernels
-// read v0, e1, e2 only); v1 and v2 are kept too so double-precision and (later) watertight kernels
+// read v0, e1, e2 and the normal ng = e2 × e1); v1 and v2 are kept too so double-precision and (later) watertight kernels
 // work from the exact input vertices. Arrays are 64-byte aligned and padded with zero-area triangles
 // (id −1) to a multiple of kBlock plus one block of slack, so a kernel may always load a full
 // register at any index below count.
@@ -26,6 +26,9 @@ struct TriangleArrays {
   const float *e2x, *e2y, *e2z;
   const float *v1x, *v1y, *v1z;
   const float *v2x, *v2y, *v2z;
+  // ng = e2 × e1, the unnormalized geometric normal (Embree's orientation), so the float `mt` kernel
+  // gets det = d · ng and t·det = (v0 − o) · ng without recomputing a cross product per ray.
+  const float *ngx, *ngy, *ngz;
   const int32_t* id;  // triangle id per slot; ids inside any range a kernel is given must increase
   uint32_t count;     // real triangles (slots [count, padded) are zero-area padding)
 };

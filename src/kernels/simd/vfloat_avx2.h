@@ -97,4 +97,12 @@ RAYVEC_INLINE vmaskd first_lanes(vdouble, uint32_t n) {
 RAYVEC_INLINE vfloat select(vmaskf m, vfloat a, vfloat b) { return {_mm256_blendv_ps(a.v, b.v, m.m)}; }
 RAYVEC_INLINE vdouble select(vmaskd m, vdouble a, vdouble b) { return {_mm256_blendv_pd(a.v, b.v, m.m)}; }
 
+// The smallest lane (NaN lanes are ignored unless all are NaN).
+RAYVEC_INLINE float hmin(vfloat a) {
+  __m128 q = _mm_min_ps(_mm256_castps256_ps128(a.v), _mm256_extractf128_ps(a.v, 1));
+  q = _mm_min_ps(q, _mm_movehl_ps(q, q));
+  q = _mm_min_ss(q, _mm_movehdup_ps(q));
+  return _mm_cvtss_f32(q);
+}
+
 }  // namespace rayvec::avx2

@@ -112,4 +112,13 @@ RAYVEC_INLINE vmaskd first_lanes(vdouble, uint32_t n) {
 RAYVEC_INLINE vfloat select(vmaskf m, vfloat a, vfloat b) { return {_mm512_mask_blend_ps(m.m, a.v, b.v)}; }
 RAYVEC_INLINE vdouble select(vmaskd m, vdouble a, vdouble b) { return {_mm512_mask_blend_pd(m.m, a.v, b.v)}; }
 
+// The smallest lane (NaN lanes are ignored unless all are NaN).
+RAYVEC_INLINE float hmin(vfloat a) {
+  __m256 m = _mm256_min_ps(_mm512_castps512_ps256(a.v), _mm512_extractf32x8_ps(a.v, 1));
+  __m128 q = _mm_min_ps(_mm256_castps256_ps128(m), _mm256_extractf128_ps(m, 1));
+  q = _mm_min_ps(q, _mm_movehl_ps(q, q));
+  q = _mm_min_ss(q, _mm_movehdup_ps(q));
+  return _mm_cvtss_f32(q);
+}
+
 }  // namespace rayvec::avx512

@@ -51,4 +51,7 @@ RAYVEC_INLINE unsigned bits(vmask a) { return a.m ? 1u : 0u; }
 template <typename T, typename B> RAYVEC_INLINE vmask first_lanes(vlane<T, B>, uint32_t n) { return {n > 0}; }
 template <typename T, typename B> RAYVEC_INLINE vlane<T, B> select(vmask m, vlane<T, B> a, vlane<T, B> b) { return m.m ? b : a; }
 
+// The smallest lane: the only one.
+template <typename T, typename B> RAYVEC_INLINE T hmin(vlane<T, B> a) { return a.v; }
+
 }  // namespace rayvec::scalar

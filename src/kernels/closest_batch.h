@@ -1,0 +1,26 @@
+// closest_batch: the closest hits of many rays over one triangle range, cache-blocked. Brute force
+// over a large mesh streams every triangle from L3 or memory once per ray (50,000 triangles are
+// 2.4 MB of v0, e1, e2 and ng, more than this machine's 1 MB L2 per core), so a lone ray is bound by
+// memory bandwidth, not arithmetic. Here the range is cut into chunks of kTriangleChunk triangles
+// (768 × 12 floats = 36 KB, L1-resident on a 48 KB L1d) and every ray of the batch runs through a
+// chunk before the next chunk is loaded — the batch shares each load, as a ray packet would, while
+// each ray keeps its own kernel call (one ray against W triangles per SIMD step, Sena et al. 2018);
+// where the table has closest_pair, two rays share each step's loads. Measured choices (chunk size,
+// pairs) are in docs/benchmarks.md. Baseline code: it calls the ISA kernels only through the table.
+#pragma once
+#include <cstdint>
+
+#include "kernels/kernel_table.h"
+
+namespace rayvec {
+
+// Triangles per chunk: a multiple of every SIMD width, so the kernels' steps stay aligned.
+inline constexpr uint32_t kTriangleChunk = 768;
+
+// For k in [0, n): hits[k] becomes the closest hit of rays[k] among slots [begin, end), exactly as
+// kernels.closest would return it (each hits[k] must be a miss or a previous result for that ray;
+// chunks go in increasing slot order, so ties still go to the lowest id).
+void closest_batch(const TriangleKernels& kernels, const TriangleArrays& tris, uint32_t begin,
+                   uint32_t end, const Ray* rays, Hit* hits, std::size_t n);
+
+}  // namespace rayvec
