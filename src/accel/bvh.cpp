@@ -28,6 +28,7 @@ Bvh::Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& 
   }
   const BinaryBvh binary = build_binned_sah(mesh, sah);
   tree_ = WideBvh(binary, traversal_->width);
+  tree_.set_box_epsilon(options.box_epsilon);
   tris_ = TriangleSoA(mesh, binary.order);
 }
 

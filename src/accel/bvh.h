@@ -19,6 +19,7 @@ struct BvhOptions {
   // 16; scalar keeps sah's 4 and 8). false: use sah.max_leaf and sah.leaf_block as given.
   bool leaves_from_kernel = true;
   int width = 0;  // children per node: 0 = the ISA's default (bvh_widths(isa).widths[0])
+  float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
 };
 
 class Bvh final : public Accelerator {

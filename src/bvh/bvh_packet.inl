@@ -58,7 +58,7 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
       int count = 0;
       alignas(64) float tn[P];
       for (int c = 0; c < N && node.ref[c] != kEmptyRef; ++c) {
-        const unsigned m = pk.template hits<N>(node.bounds, c, lanes, tn);
+        const unsigned m = pk.template hits<N>(node.bounds, c, lanes, bvh.box_epsilon, tn);
         if (m == 0) continue;
         const float d = PK::min_lanes(tn, m);
         int j = count++;

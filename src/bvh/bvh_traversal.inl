@@ -10,7 +10,8 @@
 //
 // Robust box test (after Ize 2013, "Robust BVH Ray Traversal"): t = (plane − o) · (1/d) computed as a
 // subtraction then a multiplication, so each slab distance is within 3 ulps (γ3) of the exact value;
-// the entry distance is then lowered and the exit raised by |t| · kBoxEpsilon (2^-18, far above
+// the entry distance is then lowered and the exit raised by |t| · ε (bvh.box_epsilon, by default
+// kDefaultBoxEpsilon = 2^-18, far above
 // 2γ3 ≈ 3.6e-7) so no box that the exact ray touches is missed, with room for the rounding of the
 // triangle kernels (a kernel may report t a few ulps outside the exact box). 1/d of a zero component
 // is ±inf (IEEE), making the slab ±inf; when the origin lies on that plane 0·inf = NaN, and the
@@ -19,7 +20,6 @@
 // as brute force never hits them either. Ties: a box whose entry equals the current hit distance is
 // still entered, so a farther-in-order triangle at the same t with a lower id is found.
 
-inline constexpr float kBoxEpsilon = 1.0f / 262144.0f;  // 2^-18
 inline constexpr uint32_t kLocalStack = 256;
 
 struct StackItem {
@@ -63,7 +63,7 @@ RAYVEC_INLINE void bvh_closest_from(const BvhArrays& bvh, const TriangleArrays& 
     if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];
       alignas(64) float dist[N];
-      unsigned mask = B::hits(node.bounds, r, ray.tmin, tmax, kBoxEpsilon, dist);
+      unsigned mask = B::hits(node.bounds, r, ray.tmin, tmax, bvh.box_epsilon, dist);
       if (mask != 0) {
         const unsigned first = unsigned(__builtin_ctz(mask));
         mask &= mask - 1;
@@ -128,7 +128,7 @@ bool bvh_occluded(const BvhArrays& bvh, const TriangleArrays& tris, const Triang
     if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];
       alignas(64) float dist[N];
-      unsigned mask = B::hits(node.bounds, r, ray.tmin, ray.tmax, kBoxEpsilon, dist);
+      unsigned mask = B::hits(node.bounds, r, ray.tmin, ray.tmax, bvh.box_epsilon, dist);
       if (mask != 0) {
         ref = node.ref[__builtin_ctz(mask)];
         for (mask &= mask - 1; mask != 0; mask &= mask - 1)

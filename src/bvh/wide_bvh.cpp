@@ -128,7 +128,7 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width) {
     default: throw std::invalid_argument("BVH width must be 4, 8 or 16");
   }
   storage_.reset(p);
-  arrays_ = BvhArrays{p, uint32_t(width), count, depth_ * uint32_t(width - 1) + 1};
+  arrays_ = BvhArrays{p, uint32_t(width), count, depth_ * uint32_t(width - 1) + 1, kDefaultBoxEpsilon};
 }
 
 }  // namespace rayvec

@@ -18,6 +18,8 @@ inline constexpr uint32_t kLeafFlag = 0x80000000u;
 inline constexpr uint32_t kEmptyRef = 0xffffffffu;
 inline constexpr uint32_t kMaxLeafTriangles = 32;
 inline constexpr uint32_t kMaxLeafBegin = 1u << 26;
+// Relative widening of every ray–box interval (see bvh_traversal.inl): 2^-18.
+inline constexpr float kDefaultBoxEpsilon = 1.0f / 262144.0f;
 
 // One node: bounds[0..2] = lo x, y, z and bounds[3..5] = hi x, y, z of each child, child k in lane k.
 // Unused slots have lo = +inf, hi = −inf (no ray with finite origin and direction enters them) and
@@ -34,6 +36,7 @@ struct BvhArrays {
   uint32_t width;
   uint32_t node_count;
   uint32_t stack_size;   // entries a traversal stack needs: depth · (width − 1) + 1, never exceeded
+  float box_epsilon;     // relative widening of ray–box intervals (kDefaultBoxEpsilon)
 };
 
 class WideBvh {
@@ -50,6 +53,9 @@ class WideBvh {
   uint32_t depth() const { return depth_; }  // levels of wide nodes, the root being level 1
   uint32_t leaf_count() const { return leaves_; }
   std::size_t bytes() const { return bytes_; }
+  // Changes the relative widening of ray–box intervals (must stay > 0: with 0, an infinite slab
+  // distance times 0 is NaN and the box is missed).
+  void set_box_epsilon(float eps) { arrays_.box_epsilon = eps; }
 
  private:
   struct FreeDeleter {

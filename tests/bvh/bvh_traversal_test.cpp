@@ -122,6 +122,30 @@ TEST_P(BvhTraversal, MatchesBruteForceOnTinyAndEmptyMeshes) {
   expect_same(same, rays);
 }
 
+// Triangles at exponentially growing distances make the SAH peel off a few triangles per level: a
+// deep, unbalanced tree (its stack bound is depth · (width − 1) + 1, computed at build time).
+TEST_P(BvhTraversal, DeepTreesMatchBruteForce) {
+  TriangleMesh chain;
+  float x = 1.0f;
+  for (int i = 0; i < 150; ++i, x *= 1.4f)
+    chain.add_triangle({x, -1, -1}, {x, 1, -1}, {x * 1.01f, 0, 1});
+  SahConfig sah;
+  sah.max_leaf = 1;
+  sah.leaf_block = 1;
+  BvhOptions options;
+  options.sah = sah;
+  options.leaves_from_kernel = false;
+  options.width = GetParam().width;
+  const Bvh bvh(chain, config(), options);
+  EXPECT_GE(bvh.tree().depth(), 8u) << "the chain should make a deep tree";
+  std::vector<Ray> rays;
+  for (int i = 0; i < 200; ++i) {
+    rays.push_back(Ray{{0.5f, 0.01f * float(i % 7), 0.0f}, {1.0f, 0.0f, 0.001f * float(i % 5)}});
+    rays.push_back(Ray{{1e20f, 0.0f, 0.0f}, {-1.0f, 0.001f * float(i % 3), 0.0f}});
+  }
+  expect_same(chain, rays, sah);
+}
+
 // Packets (closest_stream) give every ray exactly its single-ray answer: coherent camera tiles,
 // incoherent random rays (the packet diverges at once), partial packets and untraceable lanes.
 TEST_P(BvhTraversal, PacketsMatchSingleRays) {

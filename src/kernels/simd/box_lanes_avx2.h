@@ -99,7 +99,8 @@ struct PacketLanes8 {
   // Lanes (within `active`) whose ray overlaps child k's box of a node with N children; tn receives
   // each lane's entry distance.
   template <int N>
-  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float* tn_out) const {
+  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float eps,
+                               float* tn_out) const {
     const __m256 lx = _mm256_set1_ps(b[0][k]), ly = _mm256_set1_ps(b[1][k]), lz = _mm256_set1_ps(b[2][k]);
     const __m256 hx = _mm256_set1_ps(b[3][k]), hy = _mm256_set1_ps(b[4][k]), hz = _mm256_set1_ps(b[5][k]);
     const __m256 tnx = _mm256_mul_ps(_mm256_sub_ps(_mm256_blendv_ps(lx, hx, rx), ox), rx);
@@ -114,7 +115,7 @@ struct PacketLanes8 {
     __m256 tf = _mm256_min_ps(tfx, _mm256_set1_ps(__builtin_inff()));
     tf = _mm256_min_ps(tfy, tf);
     tf = _mm256_min_ps(tfz, tf);
-    const __m256 e = _mm256_set1_ps(1.0f / 262144.0f);  // kBoxEpsilon of bvh_traversal.inl
+    const __m256 e = _mm256_set1_ps(eps);
     tn = _mm256_fnmadd_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), tn), e, tn);
     tf = _mm256_fmadd_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), tf), e, tf);
     const __m256 lo = _mm256_max_ps(tmin, tn);

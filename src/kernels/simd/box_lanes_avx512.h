@@ -136,7 +136,8 @@ struct PacketLanes16 {
   // Lanes (within `active`) whose ray overlaps child k's box of a node with N children; tn receives
   // each lane's entry distance.
   template <int N>
-  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float* tn_out) const {
+  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float eps,
+                               float* tn_out) const {
     const __m512 lx = _mm512_set1_ps(b[0][k]), ly = _mm512_set1_ps(b[1][k]), lz = _mm512_set1_ps(b[2][k]);
     const __m512 hx = _mm512_set1_ps(b[3][k]), hy = _mm512_set1_ps(b[4][k]), hz = _mm512_set1_ps(b[5][k]);
     const __m512 tnx = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(nx, lx, hx), ox), rx);
@@ -151,7 +152,7 @@ struct PacketLanes16 {
     __m512 tf = _mm512_min_ps(tfx, _mm512_set1_ps(__builtin_inff()));
     tf = _mm512_min_ps(tfy, tf);
     tf = _mm512_min_ps(tfz, tf);
-    const __m512 e = _mm512_set1_ps(1.0f / 262144.0f);  // kBoxEpsilon of bvh_traversal.inl
+    const __m512 e = _mm512_set1_ps(eps);
     tn = _mm512_fnmadd_ps(BoxLanes16::abs_ps(tn), e, tn);
     tf = _mm512_fmadd_ps(BoxLanes16::abs_ps(tf), e, tf);
     const __m512 lo = _mm512_max_ps(tmin, tn);
