@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   rayvec::register_hits_command(cli);
   rayvec::register_visibility_command(cli);
   rayvec::register_compare_command(cli);
+  rayvec::register_accuracy_command(cli);
   rayvec::Command& bench = cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");
   // bench subcommands register on it: register_bench_<name>_command(bench)
   rayvec::register_bench_rays_command(bench);

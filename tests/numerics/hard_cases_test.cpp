@@ -137,12 +137,12 @@ TEST(HardCaseFamilies, DeterministicAcrossThreadsAndIsas) {
       const std::vector<Hit> ref = trace(*scalar, fx.family.rays);
       for (Isa isa : supported_isas()) {
         const auto accel = make_accelerator(AccelKind::brute, fx.family.mesh, {isa, in});
-        std::vector<Hit> many = trace(*accel, fx.family.rays), one(many.size());
-        for (std::size_t i = 0; i < one.size(); ++i) one[i] = accel->closest(fx.family.rays[i]);
+        const std::vector<Hit> many = trace(*accel, fx.family.rays);  // all threads
         std::size_t isa_diffs = 0;
-        for (std::size_t i = 0; i < one.size(); ++i) {
-          ASSERT_EQ(one[i].tri, many[i].tri) << fx.family.name << " ray " << i;
-          isa_diffs += one[i].tri != ref[i].tri;
+        for (std::size_t i = 0; i < many.size(); ++i) {
+          if (isa == best_isa())  // one thread, in order
+            ASSERT_EQ(accel->closest(fx.family.rays[i]).tri, many[i].tri) << fx.family.name << " ray " << i;
+          isa_diffs += many[i].tri != ref[i].tri;
         }
         if (watertight(in)) EXPECT_EQ(isa_diffs, 0u) << fx.family.name << " " << isa_name(isa);
       }
