@@ -12,7 +12,8 @@ void add_trace_options(Command& cmd, TraceOptions& options, bool with_accel) {
              "SIMD instruction set: auto (best this CPU has), scalar, avx2 or avx512")
       .option("--intersector", options.intersector,
               "ray-triangle arithmetic: mt (float, no epsilon), mt64 (double), paper "
-              "(Sena et al. 2018: |det| < 1e-6 culled, t > 1e-6)")
+              "(Sena et al. 2018: |det| < 1e-6 culled, t > 1e-6), watertight (Woop et al. 2013: no ray "
+              "slips between triangles of a closed mesh), watertight64 (the same in double)")
       .option("--threads", options.threads, "OpenMP threads (0 = all cores)");
   if (with_accel)
     cmd.option("--accel", options.accel,
@@ -27,7 +28,7 @@ TraceConfig resolve_trace_options(const TraceOptions& options) {
   const auto intersector = parse_intersector(options.intersector);
   if (!intersector)
     throw InputError("--intersector: unknown '" + options.intersector +
-                     "' (choose mt, mt64 or paper)");
+                     "' (choose mt, mt64, paper, watertight or watertight64)");
   config.intersector = *intersector;
   if (options.threads < 0) throw InputError("--threads: must be 0 (all cores) or more");
   if (options.threads > 0) omp_set_num_threads(options.threads);
