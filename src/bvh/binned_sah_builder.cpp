@@ -16,6 +16,7 @@ constexpr int kMaxBins = 64;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr uint32_t kParallelBinning = 1u << 16;  // ranges this large bin in parallel chunks
 constexpr int kBinningChunks = 4;
+constexpr std::size_t kParallelBuild = 16384;  // fewer triangles: build on the calling thread
 
 // One triangle's box and id, moved (not indexed) by the partitions so every pass reads memory in
 // order — random access through an index array was the builder's bottleneck.
@@ -81,7 +82,9 @@ class Builder {
     prims_.resize(n);
     out_.order.resize(n);
     const auto count = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(static)
+    // small meshes stay on one thread: on a loaded machine each parallel region can wait a whole
+    // scheduler slice for its second thread, far longer than the work
+#pragma omp parallel for schedule(static) if (count >= kParallelBuild)
     for (std::int64_t i = 0; i < count; ++i) {
       BinBox b;
       for (int c = 0; c < 3; ++c) {
@@ -101,7 +104,7 @@ class Builder {
     if (prims_.empty()) return;
     BinBox root;
     for (const Prim& p : prims_) root.grow(p);
-#pragma omp parallel
+#pragma omp parallel if (prims_.size() >= kParallelBuild)
 #pragma omp single nowait
     build(0, 0, static_cast<uint32_t>(prims_.size()), root.box(), 0);
     out_.nodes.resize(next_node_.load());
