@@ -13,7 +13,7 @@ BvhWidths bvh_widths(Isa isa) {
     case Isa::avx2: return {{8, 0, 0}, 1};
     case Isa::scalar: break;
   }
-  return {{4, 8, 0}, 2};
+  return {{8, 4, 0}, 2};
 }
 
 const BvhKernels& bvh_kernels(Isa isa, int width) {
