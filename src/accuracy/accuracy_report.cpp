@@ -71,6 +71,14 @@ const ModeResult* find(const AccuracyReport& r, Intersector in, Isa isa) {
   return nullptr;
 }
 
+// Median over repeats of other[k] / base[k]: the time ratio of two modes, paired by repeat.
+double paired_ratio(const std::vector<double>& other, const std::vector<double>& base) {
+  std::vector<double> r;
+  for (std::size_t k = 0; k < other.size() && k < base.size(); ++k)
+    if (base[k] > 0) r.push_back(other[k] / base[k]);
+  return median(r);
+}
+
 std::size_t family_index(const AccuracyReport& r, const char* name) {
   for (std::size_t f = 0; f < r.families.size(); ++f)
     if (r.families[f] == name) return f;
@@ -88,7 +96,9 @@ void write_student_summary(const AccuracyReport& r, std::FILE* out) {
   for (std::size_t f = 0; f < r.families.size(); ++f)
     if (r.family_crossing[f]) crossing_rays += mt->families[f].oracle_hits;
   const std::size_t tiny = family_index(r, "tiny_closed");
-  auto extra = [](double base, double other) { return other > 0 ? 100.0 * (base / other - 1.0) : 0.0; };
+  auto extra = [](const std::vector<double>& other, const std::vector<double>& base) {
+    return 100.0 * (paired_ratio(other, base) - 1.0);
+  };
   const Totals tp = totals(r, *paper, false), tm = totals(r, *mt, false), t64 = totals(r, *mt64, false),
                tw = totals(r, *wt, false), tw64 = totals(r, *w64, false);
   std::fprintf(out,
@@ -114,9 +124,9 @@ void write_student_summary(const AccuracyReport& r, std::FILE* out) {
       isa_name(isa), pct(paper->families[tiny].false_misses, paper->families[tiny].oracle_hits),
       tp.crossing_fm, crossing_rays, tm.crossing_fm, crossing_rays, t64.crossing_fm, tw.crossing_fm,
       pct(tw.wn, tw.oracle_hits), pct(tw.fm, tw.oracle_hits), pct(tw.fh, tw.rays - tw.oracle_hits),
-      extra(mt->bvh_mrays, wt->bvh_mrays), extra(mt->brute_gtests, wt->brute_gtests),
-      tw64.fm + tw64.fh + tw64.wn, tw64.rays, extra(mt->bvh_mrays, w64->bvh_mrays),
-      extra(mt->brute_gtests, w64->brute_gtests), tp.fm + tp.fh + tp.wn, tm.fm + tm.fh + tm.wn,
+      extra(wt->bvh_seconds, mt->bvh_seconds), extra(wt->brute_seconds, mt->brute_seconds),
+      tw64.fm + tw64.fh + tw64.wn, tw64.rays, extra(w64->bvh_seconds, mt->bvh_seconds),
+      extra(w64->brute_seconds, mt->brute_seconds), tp.fm + tp.fh + tp.wn, tm.fm + tm.fh + tm.wn,
       t64.fm + t64.fh + t64.wn, tw.fm + tw.fh + tw.wn, tw64.fm + tw64.fh + tw64.wn);
 }
 
@@ -181,6 +191,8 @@ AccuracyReport measure_accuracy(const AccuracySettings& settings, std::FILE* log
       ModeResult m{kAllIntersectors[k], isa, 0, 0, {}};
       m.brute_gtests = double(brute_batch.size()) * double(brute_mesh.size()) / median(tb[k]) * 1e-9;
       if (bvh[k]) m.bvh_mrays = double(primary.size()) / median(tv[k]) * 1e-6;
+      m.brute_seconds = tb[k];
+      m.bvh_seconds = tv[k];
       report.modes.push_back(std::move(m));
     }
   }
@@ -234,15 +246,17 @@ void write_accuracy_markdown(const AccuracyReport& r, std::FILE* out) {
                  t.crossing_fm, pct(t.fm, t.oracle_hits), pct(t.fh, t.rays - t.oracle_hits),
                  pct(t.wn, t.oracle_hits), t.nan);
   }
-  std::fprintf(out, "\n## Cost of watertightness (same run)\n\n| ISA | BVH watertight / mt | brute watertight / mt | BVH watertight64 / mt |\n|---|---:|---:|---:|\n");
+  std::fprintf(out, "\n## Cost of watertightness (time relative to mt; median over repeats of the ratio of back-to-back runs)\n\n"
+      "| ISA | BVH watertight | brute watertight | BVH watertight64 | brute watertight64 |\n|---|---:|---:|---:|---:|\n");
   for (Isa isa : supported_isas()) {
     const ModeResult *mt = find(r, Intersector::mt, isa), *wt = find(r, Intersector::watertight, isa),
                      *w64 = find(r, Intersector::watertight64, isa);
     if (!mt || !wt || !w64) continue;
-    auto cost = [](double base, double other) { return other > 0 && base > 0 ? base / other : 0.0; };
-    std::fprintf(out, "| %s | %.3f× time | %.3f× time | %.3f× time |\n", isa_name(isa),
-                 cost(mt->bvh_mrays, wt->bvh_mrays), cost(mt->brute_gtests, wt->brute_gtests),
-                 cost(mt->bvh_mrays, w64->bvh_mrays));
+    std::fprintf(out, "| %s | %.3f× | %.3f× | %.3f× | %.3f× |\n", isa_name(isa),
+                 paired_ratio(wt->bvh_seconds, mt->bvh_seconds),
+                 paired_ratio(wt->brute_seconds, mt->brute_seconds),
+                 paired_ratio(w64->bvh_seconds, mt->bvh_seconds),
+                 paired_ratio(w64->brute_seconds, mt->brute_seconds));
   }
   std::fprintf(out, "\n## Per family (ISA %s; cells: false miss %% / false hit %% / wrong nearest %%)\n\n| family | rays |",
                isa_name(best));
@@ -280,10 +294,13 @@ void write_accuracy_json(const AccuracyReport& r, std::FILE* out) {
   std::fprintf(out, "],\"modes\":[");
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const ModeResult& m = r.modes[k];
+    const ModeResult* mt = find(r, Intersector::mt, m.isa);
     std::fprintf(out, "%s{\"intersector\":\"%s\",\"isa\":\"%s\",\"brute_gtests_per_s\":%.6f,"
-                 "\"bvh_primary_mrays_per_s\":%.6f,\"families\":[",
+                 "\"bvh_primary_mrays_per_s\":%.6f,\"brute_time_vs_mt\":%.4f,\"bvh_time_vs_mt\":%.4f,"
+                 "\"families\":[",
                  k ? "," : "", intersector_name(m.intersector), isa_name(m.isa), m.brute_gtests,
-                 m.bvh_mrays);
+                 m.bvh_mrays, mt ? paired_ratio(m.brute_seconds, mt->brute_seconds) : 0.0,
+                 mt ? paired_ratio(m.bvh_seconds, mt->bvh_seconds) : 0.0);
     for (std::size_t f = 0; f < m.families.size(); ++f) {
       const FamilyScore& s = m.families[f];
       std::fprintf(out, "%s{\"name\":\"%s\",\"rays\":%zu,\"oracle_hits\":%zu,\"false_misses\":%zu,"

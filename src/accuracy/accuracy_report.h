@@ -23,6 +23,9 @@ struct ModeResult {
   Isa isa;
   double brute_gtests = 0;  // brute force, 10^9 ray–triangle tests per second
   double bvh_mrays = 0;     // BVH primary rays, 10^6 rays per second (0: BVH unavailable)
+  // Seconds of each timed repeat; repeat k of every intersector on one ISA ran back to back, so
+  // ratios of the same repeat share the machine's load (paired ratios).
+  std::vector<double> brute_seconds, bvh_seconds;
   std::vector<FamilyScore> families;  // same order as AccuracyReport::families
 };
 
