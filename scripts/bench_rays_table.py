@@ -1,0 +1,69 @@
+#!/usr/bin/env python3
+"""Runs `rayvec bench rays --vs-embree --json` several times per mesh and thread count and prints the
+median of each number as the Markdown table of docs/benchmarks.md ("BVH vs Embree").
+
+    scripts/bench_rays_table.py RAYVEC_BINARY MESH.obj [MESH.obj ...] [--threads 1 2] [--runs 3]
+                                [--size 1024x1024]
+
+Medians over runs, because other processes share the machine: every ratio is taken inside one run
+(rayvec and Embree trace the same rays back to back) and the median of those ratios is printed.
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+
+SETS = [("primary", "rtcIntersect1"), ("primary_packet", "rtcIntersect16"),
+        ("shadow", "rtcOccluded1"), ("incoherent", "rtcIntersect1")]
+
+
+def run(binary, mesh, threads, size):
+    out = subprocess.run([binary, "bench", "rays", mesh, "--vs-embree", "--json", "--threads",
+                          str(threads), "--size", size], check=True, capture_output=True, text=True)
+    return json.loads(out.stdout)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("binary")
+    ap.add_argument("meshes", nargs="+")
+    ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
+    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--size", default="1024x1024")
+    a = ap.parse_args()
+    med = statistics.median
+    print("| mesh | triangles | threads | set (Embree call) | rayvec Mrays/s | Embree Mrays/s | ratio | id mismatches |")
+    print("|---|---:|---:|---|---:|---:|---:|---:|")
+    builds = []
+    for mesh in a.meshes:
+        for t in a.threads:
+            runs = [run(a.binary, mesh, t, a.size) for _ in range(a.runs)]
+            r0 = runs[0]
+            name = os.path.basename(mesh)
+            for key, call in SETS:
+                ours = med(r[key]["mrays_per_s"] for r in runs)
+                theirs = med(r["embree"][key]["mrays_per_s"] for r in runs)
+                ratio = med(r[key]["mrays_per_s"] / r["embree"][key]["mrays_per_s"] for r in runs)
+                mism = max(r["embree"]["mismatches"][key] for r in runs)
+                print(f"| {name} | {r0['triangles']} | {t} | {key} ({call}) | {ours:.2f} | {theirs:.2f} "
+                      f"| {ratio:.2f}x | {mism} of {r0[key]['rays']} |")
+            builds.append((name, r0["triangles"], t, med(r["build_s"] for r in runs),
+                           med(r["embree"]["build_s"] for r in runs), r0["bytes_per_tri"],
+                           r0["isa"], r0["cpu"]))
+    print()
+    print("| mesh | triangles | threads | rayvec build s | Embree HIGH build s | rayvec/Embree time | bytes/triangle |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for name, tris, t, ours, theirs, bpt, isa, cpu in builds:
+        print(f"| {name} | {tris} | {t} | {ours:.4f} | {theirs:.4f} | {ours / theirs:.2f} | {bpt:.1f} |")
+    print()
+    by = {(b[0], b[2]): b for b in builds}
+    for name in dict.fromkeys(b[0] for b in builds):
+        if (name, 1) in by and (name, 2) in by:
+            print(f"- {name}: 2-thread build speedup rayvec {by[(name, 1)][3] / by[(name, 2)][3]:.2f}x, "
+                  f"Embree {by[(name, 1)][4] / by[(name, 2)][4]:.2f}x")
+    print(f"- isa {builds[0][6]}, cpu {builds[0][7]}, median of {a.runs} runs of the command")
+
+
+if __name__ == "__main__":
+    main()
