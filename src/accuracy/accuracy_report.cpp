@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -161,6 +162,17 @@ AccuracyReport measure_accuracy(const AccuracySettings& settings, std::FILE* log
   report.bvh_triangles = sphere.size();
   const BenchCamera cam = frame_mesh(sphere, settings.bvh_size, settings.bvh_size);
   const RayBatch primary = batch_of(primary_rays(cam).rays);
+  // The same rays with a NaN or Inf in one field each (issue 5: no slowdown beyond 2.5×).
+  RayBatch poisoned = primary;
+  for (std::size_t i = 0; i < poisoned.size(); ++i) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    switch (i % 4) {
+      case 0: poisoned.dx[i] = nan; break;
+      case 1: poisoned.oz[i] = kInf; break;
+      case 2: poisoned.dy[i] = -kInf; break;
+      default: poisoned.tmin[i] = nan; break;
+    }
+  }
 
   // Timings: per ISA, every intersector's run is interleaved with the others' in each repeat, so
   // load from other processes hits them alike and the ratios (watertight / mt) stay meaningful.
@@ -177,7 +189,7 @@ AccuracyReport measure_accuracy(const AccuracySettings& settings, std::FILE* log
         bvh[k] = nullptr;  // BVH not available in this build
       }
     }
-    std::vector<std::vector<double>> tb(n_in), tv(n_in);
+    std::vector<std::vector<double>> tb(n_in), tv(n_in), tn(n_in);
     std::vector<Hit> hb(brute_batch.size()), hv(primary.size());
     for (int rep = 0; rep <= settings.repeats; ++rep)  // rep 0: warm-up, not recorded
       for (std::size_t k = 0; k < n_in; ++k) {
@@ -186,6 +198,8 @@ AccuracyReport measure_accuracy(const AccuracySettings& settings, std::FILE* log
         if (!bvh[k]) continue;
         const double v = seconds_of([&] { trace_closest(*bvh[k], primary, hv); });
         if (rep > 0) tv[k].push_back(v);
+        const double w = seconds_of([&] { trace_closest(*bvh[k], poisoned, hv); });
+        if (rep > 0) tn[k].push_back(w);
       }
     for (std::size_t k = 0; k < n_in; ++k) {
       ModeResult m{kAllIntersectors[k], isa, 0, 0, {}};
@@ -193,6 +207,7 @@ AccuracyReport measure_accuracy(const AccuracySettings& settings, std::FILE* log
       if (bvh[k]) m.bvh_mrays = double(primary.size()) / median(tv[k]) * 1e-6;
       m.brute_seconds = tb[k];
       m.bvh_seconds = tv[k];
+      m.bvh_nonfinite_seconds = tn[k];
       report.modes.push_back(std::move(m));
     }
   }
@@ -257,6 +272,20 @@ void write_accuracy_markdown(const AccuracyReport& r, std::FILE* out) {
                  paired_ratio(wt->brute_seconds, mt->brute_seconds),
                  paired_ratio(w64->bvh_seconds, mt->bvh_seconds),
                  paired_ratio(w64->brute_seconds, mt->brute_seconds));
+  }
+  std::fprintf(out, "\n## Non-finite rays (BVH time of the primary rays with a NaN or Inf in one field "
+                   "each, relative to the same rays finite; issue limit 2.5×)\n\n| intersector |");
+  for (Isa isa : supported_isas()) std::fprintf(out, " %s |", isa_name(isa));
+  std::fprintf(out, "\n|---|");
+  for (std::size_t k = 0; k < supported_isas().size(); ++k) std::fprintf(out, "---:|");
+  std::fprintf(out, "\n");
+  for (Intersector in : kAllIntersectors) {
+    std::fprintf(out, "| %s |", intersector_name(in));
+    for (Isa isa : supported_isas()) {
+      const ModeResult* m = find(r, in, isa);
+      std::fprintf(out, " %.2f× |", m ? paired_ratio(m->bvh_nonfinite_seconds, m->bvh_seconds) : 0.0);
+    }
+    std::fprintf(out, "\n");
   }
   std::fprintf(out, "\n## Per family (ISA %s; cells: false miss %% / false hit %% / wrong nearest %%)\n\n| family | rays |",
                isa_name(best));

@@ -26,6 +26,7 @@ struct ModeResult {
   // Seconds of each timed repeat; repeat k of every intersector on one ISA ran back to back, so
   // ratios of the same repeat share the machine's load (paired ratios).
   std::vector<double> brute_seconds, bvh_seconds;
+  std::vector<double> bvh_nonfinite_seconds;  // the same primary rays with a NaN/Inf field each
   std::vector<FamilyScore> families;  // same order as AccuracyReport::families
 };
 
