@@ -133,12 +133,13 @@ int run(const Options& o) {
 
   if (o.json) {
     std::printf("{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
-                "\"intersector\":%s,\"threads\":%d,\"bvh_width\":%d,\"build_s\":%.6f,"
+                "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"build_s\":%.6f,"
                 "\"bytes_per_tri\":%.3f,",
                 json_string(o.model).c_str(), mesh.size(), width, height,
                 json_string(cpu_features().brand).c_str(), json_string(isa_name(config.isa)).c_str(),
                 json_string(intersector_name(config.intersector)).c_str(), threads,
-                bvh.tree().width(), build_s, bytes_per_tri);
+                bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh.tree().width(),
+                build_s, bytes_per_tri);
     print_sets_json(run);
     if (o.vs_embree) {
       std::printf(",\"embree\":{\"build_s\":%.6f,", embree_build_s);
@@ -151,8 +152,10 @@ int run(const Options& o) {
     std::printf("}\n");
     return 0;
   }
-  std::printf("model: %s, %zu triangles; %dx%d; median of %d runs after a warm-up\n",
-              o.model.c_str(), mesh.size(), width, height, o.repeats);
+  std::printf("model: %s, %zu triangles; %dx%d; median of %d runs after a warm-up (%s clock; "
+              "builds: wall clock)\n",
+              o.model.c_str(), mesh.size(), width, height, o.repeats,
+              bench_uses_thread_cpu_time() ? "thread CPU-time" : "wall");
   std::printf("cpu: %s; isa: %s; intersector: %s; threads: %d\n", cpu_features().brand.c_str(),
               isa_name(config.isa), intersector_name(config.intersector), threads);
   std::printf("bvh: %d-wide, %u nodes, %u leaves, depth %u; build %.4f s; %.1f bytes/triangle "

@@ -1,6 +1,7 @@
 // The measurements of `rayvec bench rays`: the three ray sets of ray_sets.h traced by a RayTracer,
 // each timed as the median of `repeats` runs after one warm-up run (tracing and storing results
-// timed, ray generation not), OpenMP-parallel over chunks of rays or 4×4 tiles. Printing lives in
+// timed, ray generation not), OpenMP-parallel over chunks of rays or 4×4 tiles. With one thread the
+// clock is the thread's CPU time (stable on a shared machine), otherwise the wall clock. Printing lives in
 // src/app/cmd_bench_rays.cpp.
 #pragma once
 #include <cstdint>
@@ -10,6 +11,9 @@
 #include "bench/ray_tracer.h"
 
 namespace rayvec {
+
+// True when ray sets are timed on the thread's CPU-time clock (omp_get_max_threads() == 1).
+bool bench_uses_thread_cpu_time();
 
 struct SetResult {
   uint64_t rays = 0, hits = 0, checksum = 0;
