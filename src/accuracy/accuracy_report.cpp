@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -16,7 +17,16 @@ namespace rayvec {
 
 namespace {
 
+// Wall time; with one OpenMP thread the calling thread's CPU time instead (the run happens on it),
+// which stays stable while other processes share the cores (as `bench rays` does).
 double seconds_of(const std::function<void()>& run) {
+  if (omp_get_max_threads() == 1) {
+    timespec t0{}, t1{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t0);
+    run();
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t1);
+    return double(t1.tv_sec - t0.tv_sec) + 1e-9 * double(t1.tv_nsec - t0.tv_nsec);
+  }
   const auto t0 = std::chrono::steady_clock::now();
   run();
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -238,9 +248,11 @@ void write_accuracy_markdown(const AccuracyReport& r, std::FILE* out) {
       "Every ray of every family is judged against an exact oracle (GMP rationals,\n"
       "`src/accuracy/exact_oracle.h`): a hit is a unique intersection with the closed triangle,\n"
       "tmin <= t <= tmax; degenerate triangles, coplanar rays and non-finite input never hit.\n"
-      "Timings are medians of %d runs on a shared 2-core machine (noisy: compare ratios within a\n"
-      "row set, not absolute numbers across runs).\n\n",
-      r.cpu.c_str(), r.threads, r.settings.repeats);
+      "Timings are medians of %d runs on a shared 2-core machine (%s; compare ratios within a\n"
+      "row set rather than absolute numbers across runs).\n\n",
+      r.cpu.c_str(), r.threads, r.settings.repeats,
+      r.threads == 1 ? "one thread: the thread's CPU-time clock, stable under load"
+                     : "wall clock: noisy when others share the cores");
   std::fprintf(out,
       "## Summary\n\n"
       "Brute force: %zu rays × %zu random triangles. BVH: the primary rays of `bench rays` "
