@@ -1,13 +1,19 @@
 #!/usr/bin/env bash
 # Installs rayvec's build and test dependencies from Debian 12 packages (apt-get; sudo when not root).
 # Skips apt entirely when everything is already installed. Embree is optional (benchmark rival only):
-# pass --with-embree to install it too.
+# pass --with-embree to install it too. --with-fuzz adds clang-14 and its libFuzzer runtime
+# (scripts/fuzz.sh, tests/fuzz/); the normal build and test path does not need them.
 set -euo pipefail
 packages=(build-essential cmake pkg-config
           libtinyobjloader-dev libopenimageio-dev openimageio-tools libopenexr-dev
           libglm-dev nlohmann-json3-dev libcli11-dev
           libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev)
-[[ "${1:-}" == "--with-embree" ]] && packages+=(libembree-dev)
+for flag in "$@"; do
+  case "$flag" in
+    --with-embree) packages+=(libembree-dev) ;;
+    --with-fuzz) packages+=(clang-14 libclang-rt-14-dev) ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

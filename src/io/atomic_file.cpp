@@ -1,5 +1,6 @@
 #include "io/atomic_file.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
@@ -34,6 +35,11 @@ void unregister_temp(const char* path) {
 
 AtomicFile::AtomicFile(std::string path)
     : path_(std::move(path)), temp_(path_ + ".tmp-" + std::to_string(::getpid())) {
+  // The temporary sits next to the path, so a directory given as output would only fail at the
+  // rename, after all the work: refuse it now.
+  struct stat st {};
+  if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw RuntimeError("cannot write " + path_ + ": it is a directory (give a file name)");
   file_ = std::fopen(temp_.c_str(), "wb");
   if (!file_)
     throw RuntimeError("cannot write " + path_ + ": " + std::strerror(errno) +

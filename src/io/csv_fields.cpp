@@ -1,5 +1,6 @@
 #include "io/csv_fields.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -22,7 +23,7 @@ std::string_view trim(std::string_view s) {
 [[noreturn]] void bad_field(std::string_view field, std::size_t k, const CsvPlace& where,
                             const char* what) {
   throw InputError(where.file, where.line,
-                   "field " + std::to_string(k + 1) + " '" + std::string(field) + "' " + what);
+                   "field " + std::to_string(k + 1) + " '" + printable(field) + "' " + what);
 }
 
 // A finite value beyond the float/double range parses as out_of_range in from_chars; so does an
@@ -72,7 +73,35 @@ std::string read_text_file(const std::string& path) {
   const int err = std::ferror(f) ? errno : 0;  // e.g. EISDIR: fopen accepts a directory
   std::fclose(f);
   if (err) throw InputError(path, 0, std::string("cannot read: ") + std::strerror(err));
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
+  if (text.rfind("\xFF\xFE", 0) == 0 || text.rfind("\xFE\xFF", 0) == 0)
+    throw InputError(path, 0,
+                     "is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8 "
+                     "or ASCII");
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    const auto line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + nul, '\n'));
+    throw InputError(path, line,
+                     "contains a NUL byte: this is binary data, not a text file (UTF-16 or UTF-32 "
+                     "text must be saved as UTF-8)");
+  }
   return text;
+}
+
+std::string printable(std::string_view text) {
+  constexpr std::size_t kMax = 40;
+  std::string out;
+  for (std::size_t i = 0; i < text.size() && i < kMax; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7F) {
+      out += static_cast<char>(c);
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", c);
+      out += hex;
+    }
+  }
+  if (text.size() > kMax) out += "...";
+  return out;
 }
 
 bool LineCursor::next(std::string_view& line) {

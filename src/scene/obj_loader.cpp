@@ -28,6 +28,12 @@ class MtlReader : public tinyobj::MaterialReader {
                   std::map<std::string, int>* by_name, std::string* warn,
                   std::string* err) override {
     const fs::path mtl = obj_dir_ / name;
+    // Only regular files: a stranger's `mtllib /dev/zero` (or a FIFO) would read forever.
+    std::error_code ec;
+    if (fs::exists(mtl, ec) && !fs::is_regular_file(mtl, ec)) {
+      if (warn) *warn += "material file " + mtl.string() + " is not a regular file; using default materials\n";
+      return false;
+    }
     std::ifstream in(mtl);
     if (!in) {
       if (warn) *warn += "material file " + mtl.string() + " not found; using default materials\n";

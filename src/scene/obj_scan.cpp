@@ -1,6 +1,8 @@
 #include "scene/obj_scan.h"
 
 #include <charconv>
+#include <cstdlib>
+#include <string>
 #include <cmath>
 #include <vector>
 
@@ -38,10 +40,30 @@ void check_coordinates(std::string_view rest, int needed, const char* kind, cons
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     const bool parsed = end == digits.data() + digits.size() &&
                         (ec == std::errc() || ec == std::errc::result_out_of_range);
+    // from_chars leaves `value` unchanged (0) when out of range: strtod tells 1e400 (inf,
+    // rejected below) from 1e-400 (0, accepted).
+    if (parsed && ec == std::errc::result_out_of_range)
+      value = std::strtod(std::string(digits).c_str(), nullptr);
     if (!parsed || !std::isfinite(value) || !std::isfinite(static_cast<float>(value)))
       throw InputError(path, line_no,
                        std::string("`") + kind + "` coordinate " + std::to_string(k + 1) + " '" +
-                           std::string(token) + "' is not a finite number");
+                           printable(token) + "' is not a finite number");
+  }
+}
+
+// `vw vid joint weight joint weight ...` (tinyobjloader's skin-weight extension, unused by
+// rayvec): tinyobjloader converts each joint id to int without a range check, which is undefined
+// behaviour for NaN or ids of 2^31 and more (found by fuzz_obj). Negative ids it rejects itself.
+void check_skin_weights(std::string_view rest, const std::string& path, std::size_t line_no) {
+  next_token(rest);  // vertex id
+  for (int k = 0;; ++k) {
+    const std::string_view token = next_token(rest);
+    if (token.empty()) return;
+    if (k % 2 != 0) continue;  // weights are floats, any value
+    const double joint = std::strtod(std::string(token).c_str(), nullptr);
+    if (!(joint < 2147483648.0))
+      throw InputError(path, line_no,
+                       "`vw` joint id '" + printable(token) + "' is not a number below 2^31");
   }
 }
 
@@ -62,9 +84,13 @@ const char* const kKindPlurals[] = {"vertices", "texture coordinates", "normals"
 
 void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRef>& forward,
                 const std::string& path, std::size_t line_no) {
-  int corners = 0;
+  long corners = 0;
   for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
-    ++corners;
+    if (++corners > kMaxFaceCorners)
+      throw InputError(path, line_no,
+                       "a face with more than " + std::to_string(kMaxFaceCorners) +
+                           " corners: rayvec does not triangulate polygons that large (the ear "
+                           "clipping takes quadratic time); split it into smaller polygons");
     // v, v/vt, v//vn, v/vt/vn
     for (int kind = 0; kind < 3 && !token.empty(); ++kind) {
       const std::size_t slash = token.find('/');
@@ -74,7 +100,7 @@ void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRe
       long index = 0;
       const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
       const std::string where = std::string("face corner ") + std::to_string(corners) + ": " +
-                                kKindNames[kind] + " index '" + std::string(part) + "'";
+                                kKindNames[kind] + " index '" + printable(part) + "'";
       if (ec != std::errc() || end != part.data() + part.size())
         throw InputError(path, line_no, where + " is not an integer");
       if (index == 0) throw InputError(path, line_no, where + " is 0 (OBJ indices start at 1)");
@@ -96,12 +122,16 @@ void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRe
 void check_obj_text(std::string_view text, const std::string& path) {
   Counts seen;
   std::vector<ForwardRef> forward;
-  LineCursor cursor(text);
-  std::string_view line;
-  while (cursor.next(line)) {
-    std::string_view rest = line;
+  // Lines end as tinyobjloader ends them (LF, CRLF or a lone CR, as old Mac files have): with LF
+  // only, a CR-only file would be one line here and its later lines would go unchecked.
+  std::size_t pos = 0, line_no = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find_first_of("\r\n", pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view rest = text.substr(pos, end - pos);
+    pos = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+    ++line_no;
     const std::string_view keyword = next_token(rest);
-    const std::size_t line_no = cursor.line_number();
     if (keyword == "v") {
       check_coordinates(rest, 3, "v", path, line_no);
       ++seen.v;
@@ -113,6 +143,8 @@ void check_obj_text(std::string_view text, const std::string& path) {
       ++seen.vt;
     } else if (keyword == "f") {
       check_face(rest, seen, forward, path, line_no);
+    } else if (keyword == "vw") {
+      check_skin_weights(rest, path, line_no);
     }
   }
   for (const ForwardRef& ref : forward) {

@@ -199,6 +199,18 @@ Scene load_scene_json(const std::string& path) {
     std::string what = e.what();
     what = what.substr(what.find(':') != std::string::npos ? what.rfind(':') + 2 : 0);
     throw InputError(path, std::size_t(line), "invalid JSON: " + what);
+  } catch (const json::exception& e) {
+    // e.g. out_of_range 406 "number overflow parsing '1e999'" (found by fuzz_scene_json): no byte
+    // position, so point at the line of the quoted text.
+    std::string what = e.what();
+    what = what.substr(what.find(']') != std::string::npos ? what.find(']') + 2 : 0);
+    const std::size_t q = what.find('\''), q2 = what.rfind('\'');
+    std::size_t line = 0;
+    if (q != std::string::npos && q2 > q) {
+      const std::size_t at = text.find(what.substr(q + 1, q2 - q - 1));
+      if (at != std::string::npos) line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+    }
+    throw InputError(path, line, "invalid JSON: " + what);
   }
   const Reader r(path, text);
   r.keys(root, "", {"camera", "background", "ambient", "lights", "objects", "render", "comment"});

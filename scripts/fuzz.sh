@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses of tests/fuzz/ (clang-14, ASan + UBSan) into build-fuzz/ and runs
+# each one for SECONDS (default 10) seconds, one after another, starting from the seed corpus in
+# tests/fuzz/corpus/<target>/ (the corpus grown by earlier runs is kept in build-fuzz/corpus/).
+# Exits non-zero at the first crash, leak, hang (-timeout) or sanitizer report, naming the
+# reproducer file; turn it into a regression test under tests/data/ (see docs/reliability.md).
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: obj scene_json rays_csv visibility_csv
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+seconds="${1:-10}"
+shift || true
+targets=("$@")
+((${#targets[@]})) || targets=(obj scene_json rays_csv visibility_csv)
+build="${RAYVEC_FUZZ_BUILD:-$root/build-fuzz}"
+
+"$root/scripts/install-deps.sh" --with-fuzz
+cmake -S "$root/tests/fuzz" -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 >/dev/null
+cmake --build "$build" -j "$(nproc)"
+
+# The harnesses write their input to files here (memory-backed when /dev/shm exists).
+scratch=$(mktemp -d /dev/shm/rayvec-fuzz-XXXXXX 2>/dev/null || mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+export RAYVEC_FUZZ_SCRATCH="$scratch"
+
+for t in "${targets[@]}"; do
+  corpus="$build/corpus/$t"
+  artifacts="$build/artifacts/$t"
+  mkdir -p "$corpus" "$artifacts"
+  log="$build/fuzz_$t.log"
+  # -timeout: an input taking more than 10 s counts as a hang; -rss_limit_mb: as a memory bomb.
+  if ! "$build/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+       -print_final_stats=1 -artifact_prefix="$artifacts/" \
+       "$corpus" "$root/tests/fuzz/corpus/$t" >"$log" 2>&1; then
+    grep -E "ERROR|SUMMARY|Test unit written" "$log" >&2 || tail -20 "$log" >&2
+    echo "fuzz: $t FAILED (log: $log)" >&2
+    exit 1
+  fi
+  runs=$(sed -n 's/^stat::number_of_executed_units: //p' "$log")
+  echo "fuzz: $t ok, $runs runs in ${seconds} s"
+done
