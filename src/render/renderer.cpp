@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/camera_rays.h"
+#include "render/render_budget.h"
 
 namespace rayvec {
 namespace {
@@ -54,6 +55,8 @@ std::pair<float, float> sample_position(int x, int y, int s, int n) {
 Image render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
              RenderStats& stats) {
   const Camera& cam = scene.camera;
+  // Before any allocation: an absurd size or a framebuffer beyond free memory fails now, exit 2.
+  check_render_budget(scene, static_cast<int>(channel_names(options).size()), available_memory_bytes());
   const CameraRays camera(cam);
   const Whitted whitted(scene, accel, options.whitted);
   Image image(cam.width, cam.height, channel_names(options));
