@@ -1,0 +1,24 @@
+#!/bin/sh
+# Builds the brute-force kernel experiment harness of docs/benchmarks.md ("Brute-force kernel")
+# against an existing Release build of librayvec.a. Not part of the product build.
+#   scripts/kernel_bench/build.sh BUILD_DIR
+#   RV_VARIANT=1 OUT/kernel_bench_foundation 50000 64 mt 0   # the foundation kernel (commit 7311440)
+#   OUT/kernel_bench_early 10000 100 mt 0 ; RV_VARIANT=1 OUT/kernel_bench_early 10000 100 mt 0
+# Arguments: triangles, image side of the ray subset, intersector, rays per closest_batch call
+# (0 = one closest call per ray). Prints G tests/s on the thread's CPU time and tests/cycle against
+# a dependent-add loop timed the same way.
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+src=$(cd "$here/../../src" && pwd)
+build=${1:?usage: build.sh BUILD_DIR}
+out=${OUT:-$build/kernel_bench}
+mkdir -p "$out"
+isa="-mavx2 -mfma -mavx512f -mavx512dq -mavx512bw -mavx512vl -ffp-contract=off"
+git -C "$here" show 7311440:src/kernels/moller_trumbore.inl > "$out/foundation_mt.inl"
+g++ -std=c++20 -O3 $isa -I"$src" -I"$out" -c "$here/foundation_variant.cpp" -o "$out/foundation.o"
+g++ -std=c++20 -O3 $isa -I"$src" -c "$here/early_outs_variant.cpp" -o "$out/early.o"
+for v in foundation early; do
+  g++ -std=c++20 -O2 -I"$src" "$here/kernel_bench.cpp" "$out/$v.o" "$build/librayvec.a" -fopenmp \
+      -o "$out/kernel_bench_$v"
+done
+echo "built $out/kernel_bench_foundation and $out/kernel_bench_early"
