@@ -199,7 +199,7 @@ bool occluded_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const 
 template <class V>
 struct MtNumerators {
   typename V::Mask mask;  // lanes passing the edge tests and the conservative depth pre-test
-  V un, vn, tn, adet;     // u·|det|, v·|det|, t·|det| (all >= 0 on a hit), |det|
+  V un, vn, tn, adet;     // −u·|det| (<= 0 on a hit), v·|det|, t·|det| (>= 0), |det|
 };
 
 template <class V, bool TminZero>
@@ -216,16 +216,17 @@ RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i,
   const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
   const V sign = sign_bit(det);
   out.adet = abs(det);
-  // numerators with the sign of det folded in; un = u·|det| (the negation folded into its sign)
+  // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
+  // one xor fewer than folding it)
   const V e2x = V::load(T.e2x + i), e2y = V::load(T.e2y + i), e2z = V::load(T.e2z + i);
-  out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), xor_bits(sign, V::broadcast(-0.0f)));
+  out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), sign);
   const V e1x = V::load(T.e1x + i), e1y = V::load(T.e1y + i), e1z = V::load(T.e1z + i);
   out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
   out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
   // edge tests (closed) and the depth pre-test; ordered compares reject NaN, and |det| = 0 fails
   // the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN)
   const V zero = V::broadcast(0.0f);
-  out.mask = active & (out.un >= zero) & (out.vn >= zero) & (out.un + out.vn <= out.adet) &
+  out.mask = active & (out.un <= zero) & (out.vn >= zero) & (out.vn - out.un <= out.adet) &
              (out.tn < hi * out.adet);
   if constexpr (TminZero) out.mask = out.mask & (out.tn >= zero);  // no multiply for tmin = 0
   else out.mask = out.mask & (out.tn >= lo * out.adet);
@@ -290,7 +291,7 @@ RAYVEC_INLINE void mt_finish(const TriangleArrays& T, const MtBest<V>& b, float 
   const float t = ts[k_best];
   const int32_t id = T.id[idx[k_best]];
   if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri)))
-    hit = Hit{t, us[k_best] / as[k_best], vs[k_best] / as[k_best], id};
+    hit = Hit{t, (0.0f - us[k_best]) / as[k_best], vs[k_best] / as[k_best], id};  // 0 − un: no −0
 }
 
 // One ray's constants and running best.
