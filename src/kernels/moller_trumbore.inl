@@ -26,6 +26,15 @@ RAYVEC_INLINE RayLanes<V> broadcast_ray(const Ray& r) {
           V::broadcast(S(r.tmin))};
 }
 
+// False when the ray can never hit: a NaN or Inf in its origin or direction, or NaN tmin/tmax.
+RAYVEC_INLINE bool finite_ray(const Ray& r) {
+  const float big = 3.4028235e38f;
+  const float c[6] = {r.org.x, r.org.y, r.org.z, r.dir.x, r.dir.y, r.dir.z};
+  for (float x : c)
+    if (!(x >= -big && x <= big)) return false;
+  return r.tmin == r.tmin && r.tmax == r.tmax;
+}
+
 // The smallest value greater than x (x itself for +inf and NaN), so `t < next_up(x)` means t <= x.
 RAYVEC_INLINE float next_up(float x) {
   if (!(x == x) || x == __builtin_inff()) return x;
@@ -132,6 +141,7 @@ RAYVEC_INLINE LaneHits<V> test_lanes(const TriangleArrays& T, uint32_t i, const 
 template <class V, Intersector I>
 void closest_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
   using S = typename V::Scalar;
+  if (!finite_ray(ray)) return;
   constexpr int W = V::W;
   const RayLanes<V> r = broadcast_ray<V>(ray);
   const float limit = ray.tmax < hit.t ? ray.tmax : hit.t;
@@ -172,6 +182,7 @@ template <class V, Intersector I>
 bool occluded_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
                    const HitFilter* filter) {
   using S = typename V::Scalar;
+  if (!finite_ray(ray)) return false;
   const RayLanes<V> r = broadcast_ray<V>(ray);
   const V tlimit = V::broadcast(next_up(S(ray.tmax)));
   for (uint32_t i = begin; i < end; i += V::W) {
@@ -334,6 +345,7 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
 // tmin = 0 (camera and most secondary rays) drops the multiply of the lower depth pre-test.
 template <class V>
 void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+  if (!finite_ray(ray)) return;
   if (ray.tmin == 0.0f) closest_mt_float_rays<V, true, 1>(T, begin, end, &ray, &hit);
   else closest_mt_float_rays<V, false, 1>(T, begin, end, &ray, &hit);
 }
@@ -341,6 +353,11 @@ void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, con
 template <class V>
 void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
                            Hit* hits) {
+  if (!finite_ray(rays[0]) || !finite_ray(rays[1])) {
+    closest_mt_float<V>(T, begin, end, rays[0], hits[0]);
+    closest_mt_float<V>(T, begin, end, rays[1], hits[1]);
+    return;
+  }
   if (rays[0].tmin == 0.0f && rays[1].tmin == 0.0f)
     closest_mt_float_rays<V, true, 2>(T, begin, end, rays, hits);
   else
@@ -350,6 +367,7 @@ void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end
 template <class V>
 bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
                        const HitFilter* filter) {
+  if (!finite_ray(ray)) return false;
   const RayLanes<V> r = broadcast_ray<V>(ray);
   const V lo = V::broadcast(mt_lower(ray.tmin));
   const float limit = next_up(ray.tmax);

@@ -44,15 +44,6 @@ struct WatertightRay {
   V tmin;
 };
 
-// False when the ray can never hit: a NaN or Inf in its origin or direction, or NaN tmin/tmax.
-RAYVEC_INLINE bool finite_ray(const Ray& r) {
-  const float big = 3.4028235e38f;
-  const float c[6] = {r.org.x, r.org.y, r.org.z, r.dir.x, r.dir.y, r.dir.z};
-  for (float x : c)
-    if (!(x >= -big && x <= big)) return false;
-  return r.tmin == r.tmin && r.tmax == r.tmax;
-}
-
 template <class V>
 RAYVEC_INLINE WatertightRay<V> watertight_ray(const TriangleArrays& T, const Ray& r) {
   using S = typename V::Scalar;
