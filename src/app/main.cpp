@@ -27,10 +27,11 @@ int main(int argc, char** argv) {
   rayvec::register_hits_command(cli);
   rayvec::register_visibility_command(cli);
   rayvec::register_compare_command(cli);
+  rayvec::register_render_command(cli);
   rayvec::register_accuracy_command(cli);
   rayvec::Command& bench = cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");
   // bench subcommands register on it: register_bench_<name>_command(bench)
-  rayvec::register_bench_rays_command(bench);
   rayvec::register_bench_paper_command(bench);
+  rayvec::register_bench_rays_command(bench);
   return cli.main(argc, argv);
 }

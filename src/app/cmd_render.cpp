@@ -1,0 +1,149 @@
+// `rayvec render SCENE.json|MODEL.obj -o image.png|.exr`: the Whitted renderer's front end.
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "app/command_line.h"
+#include "app/commands.h"
+#include "app/trace_options.h"
+#include "image/image_io.h"
+#include "io/atomic_file.h"
+#include "io/input_error.h"
+#include "render/effects.h"
+#include "render/progress_bar.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+namespace rayvec {
+namespace {
+
+struct RenderArgs {
+  std::string scene, output, aov, stats_json;
+  int spp = 0, max_depth = -1, width = 0, height = 0;
+  double min_contribution = -1;
+  bool stats = false, quiet = false;
+  TraceOptions trace;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void parse_aovs(const std::string& list, const std::string& output, RenderOptions& o) {
+  if (list.empty()) return;
+  std::stringstream ss(list);
+  for (std::string item; std::getline(ss, item, ',');) {
+    if (item == "depth") o.aov_depth = true;
+    else if (item == "normal") o.aov_normal = true;
+    else if (item == "id") o.aov_id = true;
+    else throw InputError("--aov: unknown '" + item + "' (choose from depth, normal, id)");
+  }
+  if (output.size() < 4 || output.substr(output.size() - 4) != ".exr")
+    throw InputError("--aov: extra channels need an .exr output (got " + output + ")");
+}
+
+// Command-line values win over the scene's "render" block; 0/-1/"" mean "not given".
+void apply_overrides(const RenderArgs& a, Scene& scene) {
+  RenderSettings& r = scene.render;
+  if (a.spp < 0 || a.spp > 4096) throw InputError("--spp: must be between 1 and 4096");
+  if (a.spp > 0) r.spp = a.spp;
+  if (a.max_depth < -1 || a.max_depth > 64) throw InputError("--max-depth: must be between 0 and 64");
+  if (a.max_depth >= 0) r.max_depth = a.max_depth;
+  if (a.min_contribution != -1 && !(a.min_contribution >= 0 && a.min_contribution <= 1))
+    throw InputError("--min-contribution: must be between 0 and 1");
+  if (a.min_contribution >= 0) r.min_contribution = float(a.min_contribution);
+  if (a.width < 0 || a.width > 16384 || a.height < 0 || a.height > 16384)
+    throw InputError("--width/--height: must be between 1 and 16384");
+  if (a.width > 0) scene.camera.width = a.width;
+  if (a.height > 0) scene.camera.height = a.height;
+}
+
+int run_render(RenderArgs& a) {
+  if (!is_writable_image_path(a.output))
+    throw InputError("-o: unknown image extension in '" + a.output + "' (use .png or .exr)");
+  RenderOptions options;
+  parse_aovs(a.aov, a.output, options);
+  RenderStats stats;
+
+  auto t = std::chrono::steady_clock::now();
+  Scene scene = load_scene(a.scene);
+  apply_overrides(a, scene);
+  if (a.trace.intersector.empty())
+    a.trace.intersector = scene.render.intersector.empty() ? TraceOptions{}.intersector
+                                                           : scene.render.intersector;
+  const TraceConfig config = resolve_trace_options(a.trace);
+  const AccelKind kind = resolve_accel(a.trace);
+  stats.load_seconds = seconds_since(t);
+  for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+
+  t = std::chrono::steady_clock::now();
+  const auto accel = make_accelerator(kind, scene.mesh, config);
+  stats.build_seconds = seconds_since(t);
+
+  options.spp = scene.render.spp;
+  options.whitted = {scene.render.max_depth, scene.render.min_contribution};
+  char settings[256];
+  std::snprintf(settings, sizeof settings,
+                "%dx%d spp=%d max_depth=%d min_contribution=%g accel=%s isa=%s intersector=%s",
+                scene.camera.width, scene.camera.height, options.spp, options.whitted.max_depth,
+                double(options.whitted.min_contribution), accel_name(kind), isa_name(config.isa),
+                intersector_name(config.intersector));
+  if (!a.quiet) {
+    std::printf("%s\n", plan_effects(scene).describe().c_str());
+    std::printf("scene: %s, %zu triangles, %zu lights; %s\n", a.scene.c_str(), scene.mesh.size(),
+                scene.lights.size(), settings);
+    std::fflush(stdout);
+  }
+
+  ProgressBar bar(!a.quiet);
+  if (bar.enabled()) options.progress = [&bar](double f) { bar.update(f); };
+  const Image image = render(scene, *accel, options, stats);
+  if (bar.enabled()) bar.update(1.0);
+
+  t = std::chrono::steady_clock::now();
+  write_image(a.output, image,
+              {{"rayvec:scene", a.scene},
+               {"rayvec:settings", settings},
+               {"rayvec:render_seconds", std::to_string(stats.render_seconds)}});
+  stats.write_seconds = seconds_since(t);
+
+  if (!a.quiet) std::printf("wrote %s (%.3f s)\n", a.output.c_str(), stats.render_seconds);
+  if (a.stats) std::printf("%s", stats.text().c_str());
+  if (!a.stats_json.empty()) {
+    AtomicFile file(a.stats_json);
+    const std::string json = stats.json();
+    std::fputs(json.c_str(), file.stream());
+    file.commit();
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_render_command(CommandLine& cli) {
+  static RenderArgs a;
+  a.trace.intersector = "";  // "" = the scene's render.intersector, else the default (mt)
+  Command& cmd =
+      cli.command("render", "Render a JSON scene or a bare OBJ with Whitted ray tracing")
+          .positional("SCENE", a.scene, "scene.json, or model.obj (camera frames it, light at eye)")
+          .required("-o,--output", a.output, "image.png (8-bit sRGB) or image.exr (linear float)")
+          .option("--spp", a.spp, "samples per pixel, stratified (0 = the scene's render.spp)")
+          .option("--max-depth", a.max_depth, "reflection/refraction depth cap (-1 = scene's)")
+          .option("--min-contribution", a.min_contribution,
+                  "skip secondary rays weighing less than this (-1 = scene's)")
+          .option("--width", a.width, "image width in pixels (0 = the scene camera's)")
+          .option("--height", a.height, "image height in pixels (0 = the scene camera's)")
+          .option("--aov", a.aov, "extra EXR channels, comma-separated: depth,normal,id")
+          .flag("--stats", a.stats, "print ray counts per kind, rays/s and time per stage")
+          .option("--stats-json", a.stats_json, "write the statistics as JSON to this file")
+          .flag("-q,--quiet", a.quiet, "print nothing but errors (and --stats)");
+  add_trace_options(cmd, a.trace, /*with_accel=*/true);
+  cmd.footer(
+         "--intersector defaults to the scene's render.intersector, else mt.\n"
+         "Examples:\n"
+         "  rayvec render scenes/whitted.json -o whitted.png\n"
+         "  rayvec render model.obj -o model.exr --aov depth,normal,id --spp 4 --stats")
+      .run([] { return run_render(a); });
+}
+
+}  // namespace rayvec
