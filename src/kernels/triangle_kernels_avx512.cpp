@@ -1,5 +1,6 @@
-// Instantiates the ray–triangle kernels (moller_trumbore.inl) for avx512. Thin on purpose: the
-// kernel body is shared; only the vector type and the compile flags (cmake/IsaFlags.cmake) differ.
+// Instantiates the ray–triangle kernels for avx512. Thin on purpose: the kernel bodies
+// (moller_trumbore.inl, watertight.inl) and the tables (triangle_kernel_tables.inl) are shared; only the
+// vector types and the compile flags (cmake/IsaFlags.cmake) differ.
 #include <cstdint>
 
 #include "kernels/kernel_table.h"
@@ -7,29 +8,10 @@
 
 namespace rayvec::avx512 {
 
+constexpr Isa kThisIsa = Isa::avx512;
+
 #include "kernels/moller_trumbore.inl"
 #include "kernels/watertight.inl"
-
-namespace {
-// constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const TriangleKernels kPaper = make_kernels<vfloat, Intersector::paper>(Isa::avx512);
-constinit const TriangleKernels kMt = make_kernels<vfloat, Intersector::mt>(Isa::avx512);
-constinit const TriangleKernels kMt64 = make_kernels<vdouble, Intersector::mt64>(Isa::avx512);
-constinit const TriangleKernels kWatertight =
-    make_watertight_kernels<vfloat, Intersector::watertight>(Isa::avx512);
-constinit const TriangleKernels kWatertight64 =
-    make_watertight_kernels<vdouble, Intersector::watertight64>(Isa::avx512);
-}  // namespace
-
-const TriangleKernels& triangle_kernels(Intersector intersector) {
-  switch (intersector) {
-    case Intersector::paper: return kPaper;
-    case Intersector::mt64: return kMt64;
-    case Intersector::watertight: return kWatertight;
-    case Intersector::watertight64: return kWatertight64;
-    case Intersector::mt: break;
-  }
-  return kMt;
-}
+#include "kernels/triangle_kernel_tables.inl"
 
 }  // namespace rayvec::avx512
