@@ -46,7 +46,7 @@ AffineMap::AffineMap(const Transform& t) : translate_(Vec3d(t.translate)) {
   linear_ = multiply(r, diagonal(t.scale.x, t.scale.y, t.scale.z));
   // (R·S)⁻ᵀ = R·S⁻¹ because R is orthonormal; scales are checked non-zero by the loader.
   normal_ = multiply(r, diagonal(1.0 / t.scale.x, 1.0 / t.scale.y, 1.0 / t.scale.z));
-  flips_ = (t.scale.x < 0) != (t.scale.y < 0) != (t.scale.z < 0);
+  flips_ = ((t.scale.x < 0) != (t.scale.y < 0)) != (t.scale.z < 0);  // odd number of mirrors
 }
 
 Vec3f AffineMap::point(Vec3f p) const {
