@@ -61,6 +61,9 @@ void apply_overrides(const RenderArgs& a, Scene& scene) {
 int run_render(RenderArgs& a) {
   if (!is_writable_image_path(a.output))
     throw InputError("-o: unknown image extension in '" + a.output + "' (use .png or .exr)");
+  // Fail before the work, not after it: an unwritable -o is found by opening (and dropping) the
+  // temporary the image will later be written through.
+  { AtomicFile probe(a.output); }
   RenderOptions options;
   parse_aovs(a.aov, a.output, options);
   RenderStats stats;

@@ -100,5 +100,12 @@ TEST(GoldenScenes, UnknownSceneKeyIsAnInputErrorNamingIt) {
   EXPECT_FALSE(std::ifstream(dir + "/x.png").good()) << "no output on bad input";
 }
 
+TEST(GoldenScenes, UnwritableOutputFailsBeforeRendering) {
+  // --spp 4096 at full size would take minutes: exiting at once shows the check comes first.
+  const auto r = run_cli("render '" + scene("whitted") + "' -o /nonexistent-dir/x.png --spp 4096 --quiet");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("cannot write /nonexistent-dir/x.png"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace rayvec
