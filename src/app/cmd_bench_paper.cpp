@@ -14,6 +14,7 @@
 #include "bench/paper_bench.h"
 #include "bench/paper_scene.h"
 #include "io/input_error.h"
+#include "io/json_string.h"
 #include "kernels/kernel_table.h"
 
 namespace rayvec {
@@ -32,15 +33,6 @@ struct Options {
 };
 
 double gtests(double tests, const Timing& t) { return t.seconds > 0 ? tests / t.seconds / 1e9 : 0; }
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
-}
 
 std::vector<const PaperModel*> chosen_models(const std::string& list) {
   std::vector<const PaperModel*> out;

@@ -13,6 +13,7 @@
 #include "app/trace_options.h"
 #include "bench/rays_bench.h"
 #include "io/input_error.h"
+#include "io/json_string.h"
 #include "scene/obj_loader.h"
 
 namespace rayvec {
@@ -38,15 +39,6 @@ void parse_size(const std::string& s, int& w, int& h) {
   } catch (const std::exception&) {
     throw InputError("--size: expected WxH with 1 <= W, H <= 16384, e.g. 1024x1024, got '" + s + "'");
   }
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
 }
 
 void print_set_json(const char* key, const SetResult& r, bool comma) {
