@@ -5,10 +5,22 @@
 # Exits non-zero at the first crash, leak, hang (-timeout) or sanitizer report, naming the
 # reproducer file; turn it into a regression test under tests/data/ (see docs/reliability.md).
 # Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: obj scene_json rays_csv visibility_csv
+#        scripts/fuzz.sh --runs N [TARGET...]      each target runs exactly N executions (no time
+#                                                  limit): the long runs of docs/reliability.md
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-seconds="${1:-10}"
-shift || true
+limit=()
+if [[ "${1:-}" == "--runs" ]]; then
+  [[ "${2:-}" =~ ^[0-9]+$ ]] || { echo "usage: scripts/fuzz.sh --runs N [TARGET...]" >&2; exit 2; }
+  limit=(-runs="$2")
+  what="$2 runs"
+  shift 2
+else
+  seconds="${1:-10}"
+  shift || true
+  limit=(-max_total_time="$seconds")
+  what="${seconds} s"
+fi
 targets=("$@")
 ((${#targets[@]})) || targets=(obj scene_json rays_csv visibility_csv)
 build="${RAYVEC_FUZZ_BUILD:-$root/build-fuzz}"
@@ -28,7 +40,8 @@ for t in "${targets[@]}"; do
   mkdir -p "$corpus" "$artifacts"
   log="$build/fuzz_$t.log"
   # -timeout: an input taking more than 10 s counts as a hang; -rss_limit_mb: as a memory bomb.
-  if ! "$build/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  start=$SECONDS
+  if ! "$build/fuzz_$t" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 \
        -print_final_stats=1 -artifact_prefix="$artifacts/" \
        "$corpus" "$root/tests/fuzz/corpus/$t" >"$log" 2>&1; then
     grep -E "ERROR|SUMMARY|Test unit written" "$log" >&2 || tail -20 "$log" >&2
@@ -36,5 +49,5 @@ for t in "${targets[@]}"; do
     exit 1
   fi
   runs=$(sed -n 's/^stat::number_of_executed_units: //p' "$log")
-  echo "fuzz: $t ok, $runs runs in ${seconds} s"
+  echo "fuzz: $t ok, $runs runs in $((SECONDS - start)) s (limit: $what)"
 done

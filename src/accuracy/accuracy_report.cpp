@@ -212,7 +212,9 @@ AccuracyReport measure_accuracy(const AccuracySettings& settings, std::FILE* log
         if (rep > 0) tn[k].push_back(w);
       }
     for (std::size_t k = 0; k < n_in; ++k) {
-      ModeResult m{kAllIntersectors[k], isa, 0, 0, {}};
+      ModeResult m;
+      m.intersector = kAllIntersectors[k];
+      m.isa = isa;
       m.brute_gtests = double(brute_batch.size()) * double(brute_mesh.size()) / median(tb[k]) * 1e-9;
       if (bvh[k]) m.bvh_mrays = double(primary.size()) / median(tv[k]) * 1e-6;
       m.brute_seconds = tb[k];

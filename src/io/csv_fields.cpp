@@ -63,30 +63,6 @@ void parse_fields_as(std::string_view line, T* out, std::size_t n, const CsvPlac
 
 }  // namespace
 
-std::string read_text_file(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw InputError(path, 0, std::string("cannot read: ") + std::strerror(errno));
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t got;
-  while ((got = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, got);
-  const int err = std::ferror(f) ? errno : 0;  // e.g. EISDIR: fopen accepts a directory
-  std::fclose(f);
-  if (err) throw InputError(path, 0, std::string("cannot read: ") + std::strerror(err));
-  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte-order mark
-  if (text.rfind("\xFF\xFE", 0) == 0 || text.rfind("\xFE\xFF", 0) == 0)
-    throw InputError(path, 0,
-                     "is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8 "
-                     "or ASCII");
-  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
-    const auto line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + nul, '\n'));
-    throw InputError(path, line,
-                     "contains a NUL byte: this is binary data, not a text file (UTF-16 or UTF-32 "
-                     "text must be saved as UTF-8)");
-  }
-  return text;
-}
-
 std::string printable(std::string_view text) {
   constexpr std::size_t kMax = 40;
   std::string out;

@@ -1,4 +1,4 @@
-// Small pieces shared by rayvec's CSV readers (rays, verts, faces): the whole file in memory, line
+// Small pieces shared by rayvec's CSV readers (rays, verts, faces): line
 // iteration with line numbers, and strict number fields through std::from_chars. Every failure is an
 // InputError `file:line: what is wrong`.
 #pragma once
@@ -7,13 +7,6 @@
 #include <string_view>
 
 namespace rayvec {
-
-// The whole file as text. Throws InputError(`path: cannot read: <reason>`) when it cannot be opened
-// or read (missing file, a directory, no permission). A UTF-8 byte-order mark is dropped (editors
-// on Windows write one; it would otherwise glue itself to the first keyword or number). Throws
-// InputError for text that is not ASCII/UTF-8: `path: is UTF-16 text ...` for a UTF-16 byte-order
-// mark, `path:line: contains a NUL byte ...` for binary data (or UTF-16/32 without a mark).
-std::string read_text_file(const std::string& path);
 
 // `text` as it may appear inside a message: bytes outside printable ASCII shown as \xNN, and cut
 // to its first 40 bytes followed by "..." so that a megabyte-long token gives a one-line message.

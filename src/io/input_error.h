@@ -11,7 +11,19 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
   // `file:line: message` (line 0 means the whole file: `file: message`).
   InputError(const std::string& file, std::size_t line, const std::string& message)
-      : std::runtime_error(file + (line ? ":" + std::to_string(line) : std::string()) + ": " + message) {}
+      : std::runtime_error(place(file, line) + message) {}
+
+ private:
+  // Appended piece by piece: g++ 12 warns falsely (-Wrestrict, its bug 105651) on `":" + string`.
+  static std::string place(const std::string& file, std::size_t line) {
+    std::string s = file;
+    if (line) {
+      s += ':';
+      s += std::to_string(line);
+    }
+    s += ": ";
+    return s;
+  }
 };
 
 struct RuntimeError : std::runtime_error {

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "io/csv_fields.h"
+#include "io/text_file.h"
 #include "io/input_error.h"
 
 namespace rayvec {

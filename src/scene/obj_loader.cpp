@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/csv_fields.h"
+#include "io/text_file.h"
 #include "io/input_error.h"
 #include "scene/obj_scan.h"
 

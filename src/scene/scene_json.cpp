@@ -4,11 +4,10 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
-#include <sstream>
 
 #include "io/input_error.h"
+#include "io/text_file.h"
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
 
@@ -185,11 +184,7 @@ RenderSettings read_render(const Reader& r, const json& j) {
 }  // namespace
 
 Scene load_scene_json(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = read_text_file(path);  // bounded; rejects binary data and UTF-16
   json root;
   try {
     root = json::parse(text);

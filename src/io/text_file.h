@@ -1,0 +1,25 @@
+// Reading a whole input file (OBJ, scene JSON, rays and mesh CSV) into memory, safely: a stranger's
+// path may name binary data, a device that never ends (/dev/zero, /dev/urandom) or a FIFO fed by
+// `yes`. All of them end in a clear InputError instead of a hang or an out-of-memory kill.
+#pragma once
+#include <cstddef>
+#include <string>
+
+namespace rayvec {
+
+// The largest input file read_text_file accepts, in bytes: RAYVEC_MAX_INPUT_MB megabytes (10^6
+// bytes) from the environment when set to a positive integer, else 4096 MB. Inputs that big are
+// far beyond any scene rayvec traces well (a 1M-triangle OBJ is about 60 MB).
+std::size_t max_input_bytes();
+
+// The whole file as text. Throws InputError(`path: cannot read: <reason>`) when it cannot be opened
+// or read (missing file, a directory, no permission). A UTF-8 byte-order mark is dropped (editors
+// on Windows write one; it would otherwise glue itself to the first keyword or number). Throws
+// InputError for text that is not ASCII/UTF-8: `path: is UTF-16 text ...` for a UTF-16 byte-order
+// mark, `path:line: contains a NUL byte ...` for binary data (or UTF-16/32 without a mark) — found
+// while reading, so /dev/zero fails at once. A file (or stream) longer than max_input_bytes()
+// throws `path: is larger than the N MB input limit ...` naming RAYVEC_MAX_INPUT_MB; a regular file
+// is judged by its size before any byte is read.
+std::string read_text_file(const std::string& path);
+
+}  // namespace rayvec
