@@ -213,25 +213,39 @@ struct MtNumerators {
   V un, vn, tn, adet;     // −u·|det| (<= 0 on a hit), v·|det|, t·|det| (>= 0), |det|
 };
 
-template <class V, bool TminZero>
-RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
-                                            typename V::Mask active, V lo, V hi) {
+// Where the float `mt` arithmetic gets its triangle values: W consecutive triangles, one per lane
+// (brute force and the single-ray leaf kernel), or one triangle broadcast to every lane (the
+// ray-packet leaf kernel, mt_packet.inl). `at(T.v0x)` gives the lanes of that array. Both go
+// through mt_numerators_core, so a ray gets bit-identical numerators whichever way the lanes are
+// laid out; the values are fetched where they are used, as before the split.
+template <class V>
+struct MtTriangleLanes {
+  uint32_t i;
+  RAYVEC_INLINE V operator()(const float* a) const { return V::load(a + i); }
+};
+
+// The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` against the triangle lanes
+// `at` gives. `mask` holds the closed edge tests and the upper depth pre-test tn < hi·|det|, but
+// NOT the lower one (tmin), which the callers add (mt_numerators; the packet kernel per lane).
+template <class V, class At>
+RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const At& at,
+                                                 const RayLanes<V>& r, typename V::Mask active, V hi) {
   MtNumerators<V> out;
   // s = v0 − o, c = s × d
-  const V sx = V::load(T.v0x + i) - r.ox, sy = V::load(T.v0y + i) - r.oy, sz = V::load(T.v0z + i) - r.oz;
+  const V sx = at(T.v0x) - r.ox, sy = at(T.v0y) - r.oy, sz = at(T.v0z) - r.oz;
   const V cx = fmsub(sy, r.dz, sz * r.dy);
   const V cy = fmsub(sz, r.dx, sx * r.dz);
   const V cz = fmsub(sx, r.dy, sy * r.dx);
   // det = d · ng
-  const V ngx = V::load(T.ngx + i), ngy = V::load(T.ngy + i), ngz = V::load(T.ngz + i);
+  const V ngx = at(T.ngx), ngy = at(T.ngy), ngz = at(T.ngz);
   const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
   const V sign = sign_bit(det);
   out.adet = abs(det);
   // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
   // one xor fewer than folding it)
-  const V e2x = V::load(T.e2x + i), e2y = V::load(T.e2y + i), e2z = V::load(T.e2z + i);
+  const V e2x = at(T.e2x), e2y = at(T.e2y), e2z = at(T.e2z);
   out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), sign);
-  const V e1x = V::load(T.e1x + i), e1y = V::load(T.e1y + i), e1z = V::load(T.e1z + i);
+  const V e1x = at(T.e1x), e1y = at(T.e1y), e1z = at(T.e1z);
   out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
   out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
   // edge tests (closed) and the depth pre-test; ordered compares reject NaN, and |det| = 0 fails
@@ -239,7 +253,14 @@ RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i,
   const V zero = V::broadcast(0.0f);
   out.mask = active & (out.un <= zero) & (out.vn >= zero) & (out.vn - out.un <= out.adet) &
              (out.tn < hi * out.adet);
-  if constexpr (TminZero) out.mask = out.mask & (out.tn >= zero);  // no multiply for tmin = 0
+  return out;
+}
+
+template <class V, bool TminZero>
+RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
+                                            typename V::Mask active, V lo, V hi) {
+  MtNumerators<V> out = mt_numerators_core<V>(T, MtTriangleLanes<V>{i}, r, active, hi);
+  if constexpr (TminZero) out.mask = out.mask & (out.tn >= V::broadcast(0.0f));  // no multiply for tmin = 0
   else out.mask = out.mask & (out.tn >= lo * out.adet);
   return out;
 }
