@@ -6,6 +6,8 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <new>
 
 #include "scene/mesh.h"
 
@@ -79,12 +81,14 @@ class Builder {
   Builder(const TriangleMesh& mesh, const SahConfig& config, BinaryBvh& out)
       : config_(config), bins_(std::clamp(config.bins, 2, kMaxBins)), out_(out) {
     const std::size_t n = mesh.size();
-    prims_.resize(n);
+    // uninitialized (no serial zeroing of 32 bytes a triangle): the parallel loop writes each one
+    prims_.reset(new Prim[n]);
+    count_ = n;
     out_.order.resize(n);
     const auto count = static_cast<std::int64_t>(n);
     // small meshes stay on one thread: on a loaded machine each parallel region can wait a whole
     // scheduler slice for its second thread, far longer than the work
-#pragma omp parallel for schedule(static) if (count >= kParallelBuild)
+#pragma omp parallel for schedule(static) if (n >= kParallelBuild)
     for (std::int64_t i = 0; i < count; ++i) {
       BinBox b;
       for (int c = 0; c < 3; ++c) {
@@ -96,18 +100,22 @@ class Builder {
       }
       prims_[i] = Prim{{b.lo[0], b.lo[1], b.lo[2]}, uint32_t(i), {b.hi[0], b.hi[1], b.hi[2]}, 0.0f};
     }
-    // at most 2n - 1 nodes; children are allocated in pairs
-    out_.nodes.resize(n == 0 ? 0 : 2 * n - 1);
+    // at most 2n - 1 nodes (children are allocated in pairs), uninitialized: the tree uses a few
+    // percent of them, so only the pages written are ever touched (zeroing 2n nodes serially cost
+    // more than the parallel parts of the build it preceded); run() copies out the used prefix
+    if (n > 0) nodes_.reset(static_cast<BinaryNode*>(::operator new(sizeof(BinaryNode) * (2 * n - 1))));
+    // uninitialized (no serial zeroing): the partitions of the large ranges go through it
+    if (n >= kParallelBinning) scratch_.reset(new Prim[n]);
   }
 
   void run() {
-    if (prims_.empty()) return;
-    BinBox root;
-    for (const Prim& p : prims_) root.grow(p);
-#pragma omp parallel if (prims_.size() >= kParallelBuild)
+    if (count_ == 0) return;
+    const auto n = static_cast<uint32_t>(count_);
+#pragma omp parallel if (n >= kParallelBuild)
 #pragma omp single nowait
-    build(0, 0, static_cast<uint32_t>(prims_.size()), root.box(), 0);
-    out_.nodes.resize(next_node_.load());
+    build(0, 0, n, range_box(0, n, false), 0);
+    out_.nodes.assign(nodes_.get(), nodes_.get() + next_node_.load());
+    nodes_.reset();
   }
 
  private:
@@ -187,11 +195,10 @@ class Builder {
   void make_leaf(uint32_t node, uint32_t begin, uint32_t end, const BBox& box) {
     for (uint32_t i = begin; i < end; ++i) out_.order[i] = prims_[i].id;
     std::sort(out_.order.begin() + begin, out_.order.begin() + end);  // ids increase in a leaf
-    out_.nodes[node] = BinaryNode{box, begin, end - begin};
+    new (nodes_.get() + node) BinaryNode{box, begin, end - begin};
   }
 
-  BBox range_box(uint32_t begin, uint32_t end, bool centroids) const {
-    BinBox b;
+  void grow_range(uint32_t begin, uint32_t end, bool centroids, BinBox& b) const {
     for (uint32_t i = begin; i < end; ++i) {
       const Prim& p = prims_[i];
       for (int a = 0; a < 3; ++a) {
@@ -200,7 +207,82 @@ class Builder {
         b.hi[a] = max_keep(b.hi[a], hi);
       }
     }
+  }
+
+  // Bounds of the boxes (or centroids) of a range; large ranges in chunks as tasks (min and max
+  // are exact, so the result does not depend on the chunking).
+  BBox range_box(uint32_t begin, uint32_t end, bool centroids) const {
+    BinBox b;
+    if (end - begin >= kParallelBinning) {
+      BinBox part[kBinningChunks];
+      const uint32_t step = (end - begin + kBinningChunks - 1) / kBinningChunks;
+      for (int c = 0; c < kBinningChunks; ++c) {
+        const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+#pragma omp task shared(part) firstprivate(cb, ce, c, centroids)
+        grow_range(cb, ce, centroids, part[c]);
+      }
+#pragma omp taskwait
+      for (const BinBox& p : part) b.grow(p);
+    } else {
+      grow_range(begin, end, centroids, b);
+    }
     return b.box();
+  }
+
+  // Moves the primitives of [begin, end) for which goes_left(p) holds before the others and
+  // returns the first of the others. Large ranges with more than one thread: a stable two-pass
+  // partition in chunks as tasks (count, then scatter through scratch_ and copy back) — the root's
+  // partition was the largest serial step of the build; one thread keeps the in-place
+  // std::partition, which moves less memory. The order inside each side does not matter: every later decision
+  // depends only on the set of primitives in a range.
+  template <class F>
+  uint32_t partition_range(uint32_t begin, uint32_t end, const F& goes_left) {
+    Prim* data = prims_.get();
+    if (end - begin < kParallelBinning || !scratch_ || omp_get_num_threads() == 1)
+      return uint32_t(std::partition(data + begin, data + end, goes_left) - data);
+    constexpr int C = kBinningChunks;
+    const uint32_t step = (end - begin + C - 1) / C;
+    uint32_t lefts[C] = {};
+    const F* pred = &goes_left;
+    for (int c = 0; c < C; ++c) {
+      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+#pragma omp task shared(lefts) firstprivate(cb, ce, c, pred, data)
+      {
+        uint32_t k = 0;
+        for (uint32_t i = cb; i < ce; ++i) k += (*pred)(data[i]) ? 1u : 0u;
+        lefts[c] = k;
+      }
+    }
+#pragma omp taskwait
+    uint32_t left_at[C], right_at[C];
+    uint32_t total_left = 0;
+    for (int c = 0; c < C; ++c) total_left += lefts[c];
+    uint32_t l = begin, r = begin + total_left;
+    for (int c = 0; c < C; ++c) {
+      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+      left_at[c] = l;
+      right_at[c] = r;
+      l += lefts[c];
+      r += (ce > cb ? ce - cb : 0) - lefts[c];
+    }
+    Prim* scratch = scratch_.get();
+    for (int c = 0; c < C; ++c) {
+      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+      const uint32_t l0 = left_at[c], r0 = right_at[c];
+#pragma omp task firstprivate(cb, ce, l0, r0, pred, data, scratch)
+      {
+        uint32_t li = l0, ri = r0;
+        for (uint32_t i = cb; i < ce; ++i) scratch[(*pred)(data[i]) ? li++ : ri++] = data[i];
+      }
+    }
+#pragma omp taskwait
+    for (int c = 0; c < C; ++c) {
+      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+#pragma omp task firstprivate(cb, ce, data, scratch)
+      std::copy(scratch + cb, scratch + ce, data + cb);
+    }
+#pragma omp taskwait
+    return begin + total_left;
   }
 
   void build(uint32_t node, uint32_t begin, uint32_t end, const BBox& box, int depth) {
@@ -217,11 +299,10 @@ class Builder {
       if (n <= config_.max_leaf && leaf_cost(n) <= split_cost) return make_leaf(node, begin, end, box);
       const int axis = split.axis;
       const float lo = cbox.lo[axis], scale = float(bins_) / cbox.extent()[axis];
-      Prim* first = prims_.data() + begin;
-      Prim* pivot = std::partition(first, prims_.data() + end, [&](const Prim& p) {
-        return bin_of(p.centroid(axis), lo, scale, bins_) <= split.bin;
+      const int bins = bins_, last_left = split.bin;
+      mid = partition_range(begin, end, [axis, lo, scale, bins, last_left](const Prim& p) {
+        return bin_of(p.centroid(axis), lo, scale, bins) <= last_left;
       });
-      mid = begin + uint32_t(pivot - first);
       left_box = split.left;
       right_box = split.right;
     } else if (n <= config_.max_leaf) {
@@ -233,7 +314,7 @@ class Builder {
       const Vec3f e = cbox.extent();
       const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
       mid = begin + n / 2;
-      std::nth_element(prims_.begin() + begin, prims_.begin() + mid, prims_.begin() + end,
+      std::nth_element(prims_.get() + begin, prims_.get() + mid, prims_.get() + end,
                        [&](const Prim& a, const Prim& b) {
                          const float ca = a.centroid(axis), cb = b.centroid(axis);
                          return ca < cb || (ca == cb && a.id < b.id);
@@ -242,7 +323,7 @@ class Builder {
       right_box = range_box(mid, end, false);
     }
     const uint32_t left = next_node_.fetch_add(2);
-    out_.nodes[node] = BinaryNode{box, left, 0};
+    new (nodes_.get() + node) BinaryNode{box, left, 0};
     if (n >= config_.task_threshold) {
 #pragma omp task firstprivate(left, begin, mid, left_box, depth)
       build(left, begin, mid, left_box, depth + 1);
@@ -257,7 +338,13 @@ class Builder {
   const SahConfig& config_;
   const int bins_;
   BinaryBvh& out_;
-  std::vector<Prim> prims_;
+  std::unique_ptr<Prim[]> prims_;
+  std::size_t count_ = 0;
+  std::unique_ptr<Prim[]> scratch_;  // partition buffer for ranges of kParallelBinning or more
+  struct OperatorDelete {
+    void operator()(BinaryNode* p) const { ::operator delete(p); }
+  };
+  std::unique_ptr<BinaryNode, OperatorDelete> nodes_;  // 2n − 1 slots, see the constructor
   std::atomic<uint32_t> next_node_{1};
 };
 

@@ -1,5 +1,6 @@
 // Structure of the built trees: every triangle in exactly one leaf, ids increasing inside a leaf,
-// child boxes inside their parents' slots, the stack bound, and determinism across thread counts.
+// child boxes inside their parents' slots, the stack bound, and determinism across thread counts;
+// the TriangleSoA the leaves index, filled in parallel.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -9,6 +10,7 @@
 
 #include "bvh/binned_sah_builder.h"
 #include "bvh/wide_bvh.h"
+#include "kernels/triangle_soa.h"
 #include "bvh_scenes.h"
 
 namespace rayvec {
@@ -74,6 +76,46 @@ TEST(BinnedSahBuilder, SameTreeForOneAndTwoThreads) {
   const WideBvh a(one, 8), b(two, 8);
   ASSERT_EQ(a.node_count(), b.node_count());
   EXPECT_EQ(0, std::memcmp(a.arrays().nodes, b.arrays().nodes, a.bytes()));
+}
+
+TEST(BinnedSahBuilder, SameTreeWhenTheTopLevelsPartitionInParallel) {
+  // 70,000 triangles: ranges of 2^16 or more are partitioned by chunked tasks (two threads) or in
+  // place (one thread); the tree must not depend on which
+  const TriangleMesh mesh = test::random_soup(70000, 0.01f, 13);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const BinaryBvh one = build_binned_sah(mesh);
+  omp_set_num_threads(2);
+  const BinaryBvh two = build_binned_sah(mesh);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one.order, two.order);
+  const WideBvh a(one, 8), b(two, 8);
+  check_wide<8>(b, mesh, two);
+  ASSERT_EQ(a.node_count(), b.node_count());
+  EXPECT_EQ(0, std::memcmp(a.arrays().nodes, b.arrays().nodes, a.bytes()));
+}
+
+TEST(TriangleSoA, ParallelFillWritesEverySlotInOrder) {
+  const TriangleMesh mesh = test::random_soup(20000, 0.05f, 14);  // above the parallel threshold
+  std::vector<uint32_t> order(mesh.size());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = uint32_t(order.size()) - 1 - i;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  const TriangleSoA soa(mesh, order);
+  omp_set_num_threads(threads);
+  ASSERT_EQ(soa.size(), mesh.size());
+  for (uint32_t s = 0; s < soa.size(); ++s) {
+    ASSERT_EQ(soa.id(s), int32_t(order[s]));
+    for (int c = 0; c < 3; ++c) {
+      const Vec3f p = c == 0 ? soa.v0(s) : (c == 1 ? soa.v1(s) : soa.v2(s)), q = mesh.vertex(order[s], c);
+      ASSERT_TRUE(p.x == q.x && p.y == q.y && p.z == q.z) << "slot " << s;
+    }
+  }
+  for (uint32_t s = soa.size(); s < soa.padded_size(); ++s) {  // padding: id -1, zero area
+    ASSERT_EQ(soa.id(s), -1);
+    const Vec3f p = soa.v0(s), q = soa.v1(s), r = soa.v2(s);
+    ASSERT_TRUE(p.x == 0 && q.y == 0 && r.z == 0 && soa.arrays().e1x[s] == 0 && soa.arrays().ngz[s] == 0);
+  }
 }
 
 TEST(BinnedSahBuilder, EmptyAndSingleTriangleMeshes) {
