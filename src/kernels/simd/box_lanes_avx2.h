@@ -18,9 +18,43 @@ struct BoxLanes8Ray {
   int nx, ny, nz, fx, fy, fz;  // bounds rows of the near and far planes per axis (0..2 lo, 3..5 hi)
 };
 
+// For rays with tmin >= 0: the reciprocals of the near and far planes, already scaled by (1 ∓ eps).
+struct BoxLanes8ForwardRay {
+  __m256 ox, oy, oz, nrx, nry, nrz, frx, fry, frz;
+  int nx, ny, nz, fx, fy, fz;
+};
+
 struct BoxLanes8 {
   static constexpr int N = 8;
   using RayData = BoxLanes8Ray;
+  using ForwardRay = BoxLanes8ForwardRay;
+
+  static RAYVEC_INLINE ForwardRay prepare_forward(const float o[3], const float rdir[3], const int near[3],
+                                                  float eps) {
+    const float dn = 1.0f - eps, up = 1.0f + eps;
+    return {_mm256_set1_ps(o[0]), _mm256_set1_ps(o[1]), _mm256_set1_ps(o[2]),
+            _mm256_set1_ps(rdir[0] * dn), _mm256_set1_ps(rdir[1] * dn), _mm256_set1_ps(rdir[2] * dn),
+            _mm256_set1_ps(rdir[0] * up), _mm256_set1_ps(rdir[1] * up), _mm256_set1_ps(rdir[2] * up),
+            near[0], near[1], near[2], near[0] < 3 ? near[0] + 3 : near[0] - 3,
+            near[1] < 3 ? near[1] + 3 : near[1] - 3, near[2] < 3 ? near[2] + 3 : near[2] - 3};
+  }
+
+  // As hits() for a ray with tmin >= 0, the widening done by the scaled reciprocals (see
+  // bvh_traversal.inl): three fewer dependent operations a node.
+  static RAYVEC_INLINE unsigned hits_forward(const float (*b)[8], const ForwardRay& r, float tmin,
+                                             float tmax, float* dist) {
+    const __m256 tnx = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.nx]), r.ox), r.nrx);
+    const __m256 tny = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.ny]), r.oy), r.nry);
+    const __m256 tnz = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.nz]), r.oz), r.nrz);
+    const __m256 tfx = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fx]), r.ox), r.frx);
+    const __m256 tfy = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fy]), r.oy), r.fry);
+    const __m256 tfz = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fz]), r.oz), r.frz);
+    // the NaN slab (0·inf) is the first operand of each max/min, so it is skipped
+    const __m256 lo = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, _mm256_set1_ps(tmin))));
+    const __m256 hi = _mm256_min_ps(tfz, _mm256_min_ps(tfy, _mm256_min_ps(tfx, _mm256_set1_ps(tmax))));
+    _mm256_storeu_ps(dist, lo);
+    return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(lo, hi, _CMP_LE_OQ)));
+  }
 
   static RAYVEC_INLINE RayData prepare(const float o[3], const float rdir[3], const int near[3]) {
     return {_mm256_set1_ps(o[0]), _mm256_set1_ps(o[1]), _mm256_set1_ps(o[2]),

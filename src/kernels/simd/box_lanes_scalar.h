@@ -15,10 +15,48 @@ struct BoxLanesRay {
   int near[3], far[3];
 };
 
+// For rays with tmin >= 0: the reciprocals of the near and far planes, already scaled by (1 ∓ eps).
+struct BoxLanesForwardRay {
+  float o[3], nr[3], fr[3];
+  int near[3], far[3];
+};
+
 template <int W>
 struct BoxLanes {
   static constexpr int N = W;
   using RayData = BoxLanesRay;
+  using ForwardRay = BoxLanesForwardRay;
+
+  static RAYVEC_INLINE ForwardRay prepare_forward(const float o[3], const float rdir[3], const int near[3],
+                                                  float eps) {
+    ForwardRay d;
+    for (int a = 0; a < 3; ++a) {
+      d.o[a] = o[a];
+      d.nr[a] = rdir[a] * (1.0f - eps);
+      d.fr[a] = rdir[a] * (1.0f + eps);
+      d.near[a] = near[a];
+      d.far[a] = near[a] < 3 ? near[a] + 3 : near[a] - 3;
+    }
+    return d;
+  }
+
+  // As hits() for a ray with tmin >= 0, the widening done by the scaled reciprocals.
+  static RAYVEC_INLINE unsigned hits_forward(const float (*b)[W], const ForwardRay& r, float tmin,
+                                             float tmax, float* dist) {
+    unsigned mask = 0;
+    for (int k = 0; k < W; ++k) {
+      float lo = tmin, hi = tmax;
+      for (int a = 0; a < 3; ++a) {
+        const float n = (b[r.near[a]][k] - r.o[a]) * r.nr[a];
+        const float f = (b[r.far[a]][k] - r.o[a]) * r.fr[a];
+        if (n > lo) lo = n;  // a NaN slab (0·inf) fails the comparison and is skipped
+        if (f < hi) hi = f;
+      }
+      dist[k] = lo;
+      if (lo <= hi) mask |= 1u << k;
+    }
+    return mask;
+  }
 
   static RAYVEC_INLINE RayData prepare(const float o[3], const float rdir[3], const int near[3]) {
     RayData d;
