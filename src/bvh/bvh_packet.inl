@@ -2,12 +2,14 @@
 // AVX2), one per lane, walk the tree together with a mask of active lanes (Wald, Slusallek, Benthin
 // & Wagner 2001; with wide nodes as in Embree's hybrid traversal). Each child box is tested against
 // all active lanes at once; the children hit by any lane are visited front to back by the entry
-// distance of their nearest lane, and dropped on pop once every lane has a nearer hit. A leaf is
-// intersected ray by ray with the triangle kernel table, so every lane gets exactly its single-ray
-// answer (closest_pair, two lanes per call, measured slower: packets 1.1x single rays instead of
-// 1.5x). When only kSingleRayLanes or fewer lanes remain active in a subtree, the packet has
-// diverged: those lanes finish that subtree by single-ray traversal (bvh_closest_from). Included
-// by the ISA units after bvh_traversal.inl.
+// distance of their nearest lane, and dropped on pop once every lane has a nearer hit. With the
+// float `mt` table of this ISA a leaf is intersected by the ray-packet kernel (mt_packet.inl: one
+// triangle against all lanes per step, exactly the single-ray answer per lane); other intersectors,
+// and packets mixing tmin = 0 with tmin != 0, intersect a leaf ray by ray with the triangle kernel
+// table (closest_pair, two lanes per call, measured slower than one: packets 1.1x single rays
+// instead of 1.5x). When only kSingleRayLanes or fewer lanes remain active in a subtree, the packet
+// has diverged: those lanes finish that subtree by single-ray traversal (bvh_closest_from).
+// Included by the ISA units after bvh_traversal.inl and mt_packet.inl (kThisIsa, vfloat of P lanes).
 
 inline constexpr int kSingleRayLanes = 2;
 
@@ -24,18 +26,44 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
   constexpr int N = B::N;
   constexpr int P = PK::P;
   const WideNode<N>* nodes = static_cast<const WideNode<N>*>(bvh.nodes);
-  alignas(64) float soa[8][P];
+  // the rays as SoA rows: o, 1/d, tmin, tmax (= min(tmax, hit.t)); d for the leaf kernel
+  static_assert(vfloat::W == P, "the packet leaf kernel has one ray per vfloat lane");
+  alignas(64) float soa[8][P], dir[3][P];
+  unsigned tmin_zero = 0;
+  const int k0 = __builtin_ctz(active);
   for (int k = 0; k < P; ++k) {
-    const Ray& r = rays[(active >> k) & 1u ? k : __builtin_ctz(active)];
+    const bool on = (active >> k) & 1u;
+    const Ray& r = rays[on ? k : k0];
     soa[0][k] = r.org.x; soa[1][k] = r.org.y; soa[2][k] = r.org.z;
-    soa[3][k] = 1.0f / r.dir.x; soa[4][k] = 1.0f / r.dir.y; soa[5][k] = 1.0f / r.dir.z;
+    dir[0][k] = r.dir.x; dir[1][k] = r.dir.y; dir[2][k] = r.dir.z;
     soa[6][k] = r.tmin;
-    const float t = (active >> k) & 1u ? hits[k].t : 0.0f;
+    const float t = on ? hits[k].t : 0.0f;
     soa[7][k] = r.tmax < t ? r.tmax : t;
+    tmin_zero |= unsigned(r.tmin == 0.0f) << k;
   }
+  const vfloat one = vfloat::broadcast(1.0f);
+  const vfloat dx = vfloat::load(dir[0]), dy = vfloat::load(dir[1]), dz = vfloat::load(dir[2]);
+  (one / dx).store(soa[3]);  // ±0 gives ±inf with the sign of the zero, as 1.0f / d does
+  (one / dy).store(soa[4]);
+  (one / dz).store(soa[5]);
   const float* const rows[8] = {soa[0], soa[1], soa[2], soa[3], soa[4], soa[5], soa[6], soa[7]};
   PK pk = PK::load(rows);
   float* tmax = soa[7];
+
+  // The leaf kernel: 0 ray by ray, 1 packet kernel with every tmin = 0, 2 packet kernel, no tmin = 0.
+  int leaf_mode = 0;
+  if (kernels.intersector == Intersector::mt && kernels.isa == kThisIsa) {
+    if ((tmin_zero & active) == active) leaf_mode = 1;
+    else if ((tmin_zero & active) == 0) leaf_mode = 2;
+  }
+  alignas(64) float initial[P], lo[P];
+  for (int k = 0; k < P; ++k) {
+    initial[k] = next_up(tmax[k]);
+    lo[k] = leaf_mode == 2 ? mt_lower(soa[6][k]) : 0.0f;
+  }
+  const MtPacketRays<vfloat> q{{vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2]),
+                                dx, dy, dz, vfloat::load(soa[6])},
+                               vfloat::load(lo)};
 
   PacketItem local[kLocalStack];
   PacketItem* stack = bvh.stack_size <= kLocalStack
@@ -49,7 +77,10 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
       for (unsigned m = lanes; m != 0; m &= m - 1) {
         const int k = __builtin_ctz(m);
         bvh_closest_from<B>(bvh, tris, kernels, rays[k], hits[k], ref);
-        if (hits[k].t < tmax[k]) tmax[k] = hits[k].t;
+        if (hits[k].t < tmax[k]) {
+          tmax[k] = hits[k].t;
+          initial[k] = next_up(tmax[k]);
+        }
       }
       pk.set_tmax(tmax);
     } else if (!(ref & kLeafFlag)) {
@@ -81,10 +112,16 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
       }
     } else if (ref != kEmptyRef) {
       const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
-      for (unsigned m = lanes; m != 0; m &= m - 1) {
-        const int k = __builtin_ctz(m);
-        kernels.closest(tris, begin, end, rays[k], hits[k]);
-        if (hits[k].t < tmax[k]) tmax[k] = hits[k].t;
+      if (leaf_mode == 1) {
+        mt_packet_closest<vfloat, true>(tris, begin, end, q, lanes, tmax, initial, hits);
+      } else if (leaf_mode == 2) {
+        mt_packet_closest<vfloat, false>(tris, begin, end, q, lanes, tmax, initial, hits);
+      } else {
+        for (unsigned m = lanes; m != 0; m &= m - 1) {
+          const int k = __builtin_ctz(m);
+          kernels.closest(tris, begin, end, rays[k], hits[k]);
+          if (hits[k].t < tmax[k]) tmax[k] = hits[k].t;
+        }
       }
       pk.set_tmax(tmax);
     }

@@ -3,11 +3,17 @@
 #include <cstdint>
 
 #include "bvh/bvh_kernels.h"
+#include "kernels/kernel_table.h"
+#include "kernels/simd/vfloat_avx2.h"
 #include "kernels/simd/box_lanes_avx2.h"
 
 namespace rayvec::avx2 {
 
+constexpr Isa kThisIsa = Isa::avx2;
+
 #include "bvh/bvh_traversal.inl"
+#include "kernels/moller_trumbore.inl"
+#include "kernels/mt_packet.inl"
 #include "bvh/bvh_packet.inl"
 
 namespace {

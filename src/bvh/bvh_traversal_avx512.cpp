@@ -3,11 +3,17 @@
 #include <cstdint>
 
 #include "bvh/bvh_kernels.h"
+#include "kernels/kernel_table.h"
+#include "kernels/simd/vfloat_avx512.h"
 #include "kernels/simd/box_lanes_avx512.h"
 
 namespace rayvec::avx512 {
 
+constexpr Isa kThisIsa = Isa::avx512;
+
 #include "bvh/bvh_traversal.inl"
+#include "kernels/moller_trumbore.inl"
+#include "kernels/mt_packet.inl"
 #include "bvh/bvh_packet.inl"
 
 namespace {

@@ -105,4 +105,11 @@ RAYVEC_INLINE float hmin(vfloat a) {
   return _mm_cvtss_f32(q);
 }
 
+// The lanes whose bit is set in b (bit k: lane k); the inverse of bits().
+RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) {
+  const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+  const __m256i m = _mm256_and_si256(_mm256_set1_epi32(int(b)), bit);
+  return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(m, bit))};
+}
+
 }  // namespace rayvec::avx2

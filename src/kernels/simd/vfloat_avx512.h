@@ -121,4 +121,9 @@ RAYVEC_INLINE float hmin(vfloat a) {
   return _mm_cvtss_f32(q);
 }
 
+// The lanes whose bit is set in b (bit k: lane k); the inverse of bits().
+RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) {
+  return {__mmask16(b)};
+}
+
 }  // namespace rayvec::avx512
