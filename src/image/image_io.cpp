@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <system_error>
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
@@ -103,7 +104,11 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
 }
 
 Image read_image(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "no such image file");
+  std::error_code ec;  // not the throwing form: a name too long for the file system is bad input
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(path, 0, ec && ec != std::errc::no_such_file_or_directory
+                                  ? "cannot read image: " + ec.message()
+                                  : std::string("no such image file"));
   std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
   if (!in) throw InputError(path, 0, "cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();

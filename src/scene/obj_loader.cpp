@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
 
 #include "io/text_file.h"
 #include "io/input_error.h"
@@ -67,8 +68,12 @@ Material convert(const tinyobj::material_t& m, const fs::path& mtl_dir,
   out.illum = m.illum;
   if (!m.diffuse_texname.empty()) {
     out.map_Kd = fs::absolute(mtl_dir / m.diffuse_texname).lexically_normal().string();
-    if (!fs::exists(out.map_Kd))
-      warnings.push_back("material '" + m.name + "': texture " + out.map_Kd + " not found");
+    // The error_code form: a stranger's name can be too long for the file system (ENAMETOOLONG),
+    // which the throwing form reports as an exception instead of a missing file.
+    std::error_code ec;
+    if (!fs::exists(out.map_Kd, ec))
+      warnings.push_back("material '" + m.name + "': texture " + out.map_Kd +
+                         (ec ? " cannot be looked up: " + ec.message() : std::string(" not found")));
   }
   return out;
 }

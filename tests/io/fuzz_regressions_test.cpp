@@ -7,6 +7,7 @@
 #include "io/input_error.h"
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
+#include "test_support.h"
 
 namespace rayvec {
 namespace {
@@ -35,6 +36,24 @@ TEST(FuzzRegressions, JsonNumberOverflowIsAnInputError) {
   const std::string path = kFuzz + "scene_number_overflow.json";
   EXPECT_EQ(input_error_of([&] { load_scene_json(path); }),
             path + ":1: invalid JSON: number overflow parsing '33333333.3331333e334'");
+}
+
+TEST(FuzzRegressions, TextureNameTooLongForTheFileSystemIsAWarning) {
+  // fuzz_obj (06:49, 2026-11-22): a `map_Kd` name of more than 255 bytes made the throwing form of
+  // std::filesystem::exists raise ENAMETOOLONG as an uncaught filesystem_error (abort). The texture
+  // must be reported like a missing one: a warning from the loader, and an InputError (exit 2) from
+  // the renderer, which needs the pixels.
+  const std::string dir = test::temp_dir("fuzz_texture_name");
+  const std::string name(300, 'x');
+  test::write_file(dir + "/m.obj", "mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  test::write_file(dir + "/m.mtl", "newmtl a\nKd 1 1 1\nmap_Kd " + name + ".png\n");
+  const ObjModel model = load_obj(dir + "/m.obj");
+  ASSERT_EQ(model.warnings.size(), 1u);
+  EXPECT_NE(model.warnings[0].find("texture " + dir + "/" + name + ".png cannot be looked up: File name too long"),
+            std::string::npos) << model.warnings[0];
+  const auto r = test::run_cli("render '" + dir + "/m.obj' -o '" + dir + "/out.png' --width 8 --height 8");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(name + ".png: cannot read"), std::string::npos) << r.err;
 }
 
 }  // namespace
