@@ -4,9 +4,10 @@
 #   scripts/kernel_bench/build.sh BUILD_DIR
 #   RV_VARIANT=1 OUT/kernel_bench_foundation 50000 64 mt 0   # the foundation kernel (commit 7311440)
 #   OUT/kernel_bench_early 10000 100 mt 0 ; RV_VARIANT=1 OUT/kernel_bench_early 10000 100 mt 0
+#   RV_AB=1 OUT/kernel_bench_sign 50000 200 mt 64            # product vs variant, paired in one process
 # Arguments: triangles, image side of the ray subset, intersector, rays per closest_batch call
 # (0 = one closest call per ray). Prints G tests/s on the thread's CPU time and tests/cycle against
-# a dependent-add loop timed the same way.
+# a dependent-add loop timed the same way (see kernel_bench.cpp for RV_AB / RV_REPS).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/../../src" && pwd)
@@ -15,10 +16,13 @@ out=${OUT:-$build/kernel_bench}
 mkdir -p "$out"
 isa="-mavx2 -mfma -mavx512f -mavx512dq -mavx512bw -mavx512vl -ffp-contract=off"
 git -C "$here" show 7311440:src/kernels/moller_trumbore.inl > "$out/foundation_mt.inl"
+# variants written against the kernel as of 96ea2dd (before the packet refactor), pinned
+git -C "$here" show 96ea2dd:src/kernels/moller_trumbore.inl > "$out/pinned_mt.inl"
 g++ -std=c++20 -O3 $isa -I"$src" -I"$out" -c "$here/foundation_variant.cpp" -o "$out/foundation.o"
-g++ -std=c++20 -O3 $isa -I"$src" -c "$here/early_outs_variant.cpp" -o "$out/early.o"
-for v in foundation early; do
+g++ -std=c++20 -O3 $isa -I"$src" -I"$out" -c "$here/early_outs_variant.cpp" -o "$out/early.o"
+g++ -std=c++20 -O3 $isa -I"$src" -I"$out" -c "$here/sign_test_variant.cpp" -o "$out/sign.o"
+for v in foundation early sign; do
   g++ -std=c++20 -O2 -I"$src" "$here/kernel_bench.cpp" "$out/$v.o" "$build/librayvec.a" -fopenmp \
       -o "$out/kernel_bench_$v"
 done
-echo "built $out/kernel_bench_foundation and $out/kernel_bench_early"
+echo "built $out/kernel_bench_foundation, _early and _sign"

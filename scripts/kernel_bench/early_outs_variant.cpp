@@ -3,7 +3,7 @@
 #include "kernels/kernel_table.h"
 #include "kernels/simd/vfloat_avx512.h"
 namespace rayvec::avx512 { namespace var {
-#include "kernels/moller_trumbore.inl"
+#include "pinned_mt.inl"  // git show 96ea2dd:src/kernels/moller_trumbore.inl (build.sh)
 template <class V>
 RAYVEC_INLINE void step_early(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r, MtBest<V>& b) {
   const V sx = V::load(T.v0x + i) - r.ox, sy = V::load(T.v0y + i) - r.oy, sz = V::load(T.v0z + i) - r.oz;

@@ -1,7 +1,6 @@
 #include "bench/paper_bench.h"
 
 #include <omp.h>
-#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +9,7 @@
 #include <memory>
 
 #include "accel/accelerator.h"
+#include "bench/cpu_clock.h"
 #include "bench/paper_scene.h"
 #include "kernels/paper_baselines.h"
 
@@ -45,25 +45,30 @@ constexpr std::size_t kChunk = 64;  // rays per closest_stream call (and per Ope
 double now(bool thread_cpu) {
   if (!thread_cpu)
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-  timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+  return thread_cpu_seconds();
 }
 
-// Runs `fn` once, then again until `min_seconds` have passed in total (at most 15 runs); the median.
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+// Runs `fn` at least `min_runs` times and until `min_seconds` have passed in total (at most 15 runs,
+// or min_runs if larger); the median. With `calibrate`, the core clock is measured before each run.
 template <typename Fn>
-Timing time_median(double min_seconds, bool thread_cpu, Fn&& fn) {
-  std::vector<double> runs;
+Timing time_median(double min_seconds, bool thread_cpu, Fn&& fn, int min_runs = 1,
+                   bool calibrate = false) {
+  std::vector<double> runs, clocks;
   double total = 0;
   do {
+    if (calibrate) clocks.push_back(measure_clock_ghz());
     const double start = now(thread_cpu);
     fn();
     const double s = now(thread_cpu) - start;
     runs.push_back(s);
     total += s;
-  } while (total < min_seconds && runs.size() < 15);
-  std::sort(runs.begin(), runs.end());
-  return Timing{runs[runs.size() / 2], int(runs.size())};
+  } while (int(runs.size()) < min_runs || (total < min_seconds && runs.size() < 15));
+  return Timing{median(runs), int(runs.size()), median(clocks)};
 }
 
 std::vector<Ray> to_rays(const RayBatch& batch) {
@@ -116,15 +121,18 @@ Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, boo
   };
 
   std::vector<Hit> vec_paper(n), vec_mt(n);
+  const int runs = min_seconds > 0 ? kVectorizedMinRuns : 1;
   {
     say("vectorized (paper)");
     const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, Intersector::paper});
-    out.vec_paper = time_median(min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_paper, 1); });
+    out.vec_paper = time_median(
+        min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_paper, 1); }, runs, true);
   }
   {
     say("vectorized (mt)");
     const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, Intersector::mt});
-    out.vec_mt = time_median(min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_mt, 1); });
+    out.vec_mt = time_median(
+        min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_mt, 1); }, runs, true);
   }
   for (std::size_t i = 0; i < n; ++i) out.mt_differences += vec_mt[i].tri != vec_paper[i].tri;
   if (!baselines) return out;

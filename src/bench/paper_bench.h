@@ -32,6 +32,11 @@ inline constexpr uint32_t kPaperScalingTriangles[3] = {2000, 10000, 50000};
 struct Timing {
   double seconds = 0;
   int repeats = 0;
+  double ghz = 0;  // vectorized Table 1 runs: median core clock measured before each run (else 0)
+  // Tests per cycle of `tests` done in `seconds` at `ghz` (0 when the clock was not measured).
+  double tests_per_cycle(double tests) const {
+    return ghz > 0 && seconds > 0 ? tests / seconds / (ghz * 1e9) : 0;
+  }
 };
 
 struct Table1Result {
@@ -58,8 +63,14 @@ uint32_t scaled_side(uint32_t rays, uint32_t divisor);
 // Progress lines go here (stderr in the command); may be empty.
 using Progress = std::function<void(const std::string&)>;
 
+// Timed runs of each vectorized Table 1 column at least (unless min_seconds is 0, i.e. testing): one
+// run of mod2 takes ~0.5 s, over the 0.2 s minimum, so it used to be a single sample — on this shared
+// VM single samples of the same kernel differ by up to 30 % (docs/benchmarks.md, "Brute-force kernel").
+inline constexpr int kVectorizedMinRuns = 5;
+
 // One Table 1 row on one thread: original and optimized (unless !baselines) and the vectorized
-// brute force of `isa` with the `paper` and `mt` intersectors; checks that ids agree.
+// brute force of `isa` with the `paper` and `mt` intersectors; checks that ids agree. The vectorized
+// timings carry the core clock measured before each run (Timing::ghz).
 Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, bool baselines,
                             double min_seconds, const Progress& progress);
 

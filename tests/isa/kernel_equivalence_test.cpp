@@ -210,7 +210,7 @@ TEST_P(KernelEquivalence, BatchMatchesOneRayAtATime) {
   const Param p = GetParam();
   Scene s = random_scene();
   s.mesh = paper_triangles(2 * kTriangleChunk + 100, 3);
-  s.rays.resize(1001);
+  s.rays.resize(401);  // odd; fewer than elsewhere: the triangle count follows the (L2-sized) chunk
   const TriangleSoA soa(s.mesh);
   const TriangleKernels& k = triangle_kernels(p.isa, p.intersector);
   const std::vector<Hit> one = trace(k, soa, s.rays);
@@ -233,7 +233,7 @@ TEST_P(KernelEquivalence, BatchMatchesOneRayAtATime) {
       }
     }
   }
-  EXPECT_GT(hits, 100);
+  EXPECT_GT(hits * 10, int(s.rays.size()));  // enough hits (about 19 %) to compare
 }
 
 TEST_P(KernelEquivalence, RandomTrianglesMatchScalar) { check(random_scene()); }
