@@ -19,6 +19,26 @@ struct PacketItem {
   float t;  // smallest entry distance of the lanes
 };
 
+// Lanes of `active` that may enter the box [lo, hi] (per axis): the slab test of
+// PacketLanes::hits — the same subtract-then-multiply slabs, which are monotonic in the box planes,
+// and the same widening, except that an infinite end stays infinite instead of becoming NaN — so a
+// lane that enters any box inside [lo, hi] under the traversal's test is never dropped here.
+RAYVEC_INLINE unsigned packet_box_lanes(const float lo[3], const float hi[3], const vfloat o[3],
+                                        const vfloat r[3], vfloat tmin, vfloat tmax, float eps,
+                                        unsigned active) {
+  const vfloat zero = vfloat::broadcast(0.0f);
+  vfloat tn = vfloat::broadcast(-__builtin_inff()), tf = vfloat::broadcast(__builtin_inff());
+  for (int a = 0; a < 3; ++a) {
+    const vfloat::Mask neg = r[a] < zero;  // near plane hi, far plane lo
+    const vfloat bl = vfloat::broadcast(lo[a]), bh = vfloat::broadcast(hi[a]);
+    tn = vmax((select(neg, bl, bh) - o[a]) * r[a], tn);  // a NaN slab (0·inf) is skipped
+    tf = vmin((select(neg, bh, bl) - o[a]) * r[a], tf);
+  }
+  tn = vmin(fmadd(abs(tn), vfloat::broadcast(-eps), tn), tn);  // inf − inf = NaN: keep tn
+  tf = vmax(fmadd(abs(tf), vfloat::broadcast(eps), tf), tf);
+  return bits(vmax(tn, tmin) <= vmin(tf, tmax)) & active;
+}
+
 // rays[0..P) with lanes `active` (the others are ignored); every active ray must be traceable.
 template <class B, class PK>
 void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
@@ -49,6 +69,25 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
   const float* const rows[8] = {soa[0], soa[1], soa[2], soa[3], soa[4], soa[5], soa[6], soa[7]};
   PK pk = PK::load(rows);
   float* tmax = soa[7];
+
+  // Camera packets often miss the whole mesh (the background): the root's box (the union of its
+  // children's) first, one test instead of N, dropping the lanes that miss it.
+  {
+    float lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = nodes[0].bounds[a][0];
+      hi[a] = nodes[0].bounds[a + 3][0];
+      for (int c = 1; c < N; ++c) {
+        lo[a] = nodes[0].bounds[a][c] < lo[a] ? nodes[0].bounds[a][c] : lo[a];
+        hi[a] = nodes[0].bounds[a + 3][c] > hi[a] ? nodes[0].bounds[a + 3][c] : hi[a];
+      }
+    }
+    const vfloat o[3] = {vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2])};
+    const vfloat r[3] = {vfloat::load(soa[3]), vfloat::load(soa[4]), vfloat::load(soa[5])};
+    active = packet_box_lanes(lo, hi, o, r, vfloat::load(soa[6]), vfloat::load(soa[7]),
+                              bvh.box_epsilon, active);
+    if (active == 0) return;
+  }
 
   // The leaf kernel: 0 ray by ray, 1 packet kernel with every tmin = 0, 2 packet kernel, no tmin = 0.
   int leaf_mode = 0;

@@ -159,6 +159,22 @@ TEST_P(BvhPacket, PartialAndMixedPacketsMatchSingleRays) {
   EXPECT_GT(expect_exact(soup, rays), 200);
 }
 
+// Lanes parallel to axes (1/d = ±inf) with origins on the planes of the root box, where a slab is
+// 0·inf = NaN: the packet's root-box pre-test and box tests must not drop a lane that single rays
+// hit (flat grid z = 0 over [0, 8]^2: vertical rays on the box's sides, in-plane rays, −0).
+TEST_P(BvhPacket, AxisParallelLanesOnTheRootBoxPlanes) {
+  const TriangleMesh grid = test::flat_grid(8);
+  std::vector<Ray> rays;
+  for (int i = 0; i < 64; ++i) {
+    const float s = float(i) * 0.125f;
+    rays.push_back(Ray{{s, 0.0f, 1.0f}, {0.0f, -0.0f, -1.0f}});
+    rays.push_back(Ray{{8.0f, s, 2.0f}, {-0.0f, 0.0f, -1.0f}});
+    rays.push_back(Ray{{-1.0f, s, 0.0f}, {1.0f, 0.0f, -0.0f}});
+    rays.push_back(Ray{{s, 9.0f, 0.0f}, {0.0f, -1.0f, 0.0f}});
+  }
+  EXPECT_GT(expect_exact(grid, rays), 100);
+}
+
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
   return std::string(isa_name(info.param.isa)) + "_" + intersector_name(info.param.intersector) +
          "_w" + std::to_string(info.param.width);

@@ -112,4 +112,9 @@ RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) {
   return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(m, bit))};
 }
 
+// Lane-wise min and max; where either lane is NaN the result is b's lane (the x86 rule, relied on
+// to skip NaN slabs and infinite widenings in box tests).
+RAYVEC_INLINE vfloat vmin(vfloat a, vfloat b) { return {_mm256_min_ps(a.v, b.v)}; }
+RAYVEC_INLINE vfloat vmax(vfloat a, vfloat b) { return {_mm256_max_ps(a.v, b.v)}; }
+
 }  // namespace rayvec::avx2

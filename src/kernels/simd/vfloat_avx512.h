@@ -126,4 +126,11 @@ RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) {
   return {__mmask16(b)};
 }
 
+// Lane-wise min and max; where either lane is NaN the result is b's lane (the x86 rule, relied on
+// to skip NaN slabs and infinite widenings in box tests).
+// (maskz with every lane: the plain intrinsics merge into _mm512_undefined_ps(), which g++ 12
+// reports as an uninitialized use when the operands are constants.)
+RAYVEC_INLINE vfloat vmin(vfloat a, vfloat b) { return {_mm512_maskz_min_ps(__mmask16(0xffff), a.v, b.v)}; }
+RAYVEC_INLINE vfloat vmax(vfloat a, vfloat b) { return {_mm512_maskz_max_ps(__mmask16(0xffff), a.v, b.v)}; }
+
 }  // namespace rayvec::avx512
