@@ -225,11 +225,11 @@ struct MtTriangleLanes {
 };
 
 // The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` against the triangle lanes
-// `at` gives. `mask` holds the closed edge tests and the upper depth pre-test tn < hi·|det|, but
-// NOT the lower one (tmin), which the callers add (mt_numerators; the packet kernel per lane).
+// `at` gives — un, vn, tn and |det| only (`mask` is left unset; mt_numerators_core and
+// mt_closest_step add their tests).
 template <class V, class At>
-RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const At& at,
-                                                 const RayLanes<V>& r, typename V::Mask active, V hi) {
+RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const TriangleArrays& T, const At& at,
+                                                  const RayLanes<V>& r) {
   MtNumerators<V> out;
   // s = v0 − o, c = s × d
   const V sx = at(T.v0x) - r.ox, sy = at(T.v0y) - r.oy, sz = at(T.v0z) - r.oz;
@@ -248,13 +248,49 @@ RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const 
   const V e1x = at(T.e1x), e1y = at(T.e1y), e1z = at(T.e1z);
   out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
   out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
-  // edge tests (closed) and the depth pre-test; ordered compares reject NaN, and |det| = 0 fails
-  // the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN)
-  const V zero = V::broadcast(0.0f);
-  out.mask = active & (out.un <= zero) & (out.vn >= zero) & (out.vn - out.un <= out.adet) &
-             (out.tn < hi * out.adet);
   return out;
 }
+
+// The closed edge tests of numerators `c`: −u·|det| <= 0, v·|det| >= 0, (u + v)·|det| <= |det|;
+// ordered compares, so a NaN fails them.
+template <class V>
+RAYVEC_INLINE typename V::Mask mt_edges(const MtNumerators<V>& c) {
+  const V zero = V::broadcast(0.0f);
+  return (c.un <= zero) & (c.vn >= zero) & (c.vn - c.un <= c.adet);
+}
+
+// mt_numerator_values plus `mask` = the closed edge tests and the upper depth pre-test
+// tn < hi·|det|, but NOT the lower one (tmin), which the callers add (mt_numerators; the packet
+// kernel per lane). |det| = 0 fails the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN).
+template <class V, class At>
+RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const At& at,
+                                                 const RayLanes<V>& r, typename V::Mask active, V hi) {
+  MtNumerators<V> out = mt_numerator_values<V>(T, at, r);
+  out.mask = active & mt_edges(out) & (out.tn < hi * out.adet);
+  return out;
+}
+
+// The brute-force pre-test with ONE mask instruction: on Zen 5 every instruction that writes a mask
+// register competes with the 19 multiplies/FMAs of a step for the same two pipes, while adds and
+// bitwise ops have pipes of their own. So the five tests are sign bits — u·|det| = 0 − un,
+// v·|det| = vn + 0, (1 − u − v)·|det| = |det| − (u + v)·|det|, t·|det| − lo·|det| (t·|det| + 0
+// for tmin = 0) and hi·|det| − t·|det| must all have a clear sign (the +0 turns −0 into +0, so
+// closed edges stay closed) — ORed and tested once. Conservative: every lane passing the ordered
+// tests (mt_edges, tmin <= t <= hi) passes it; NaN lanes and |det| = 0 may pass too, so the
+// caller must repeat the ordered tests on the rare steps where a lane passes (mt_closest_step).
+// neg_lo = −lo (unused when TminZero).
+template <class V, bool TminZero>
+RAYVEC_INLINE typename V::Mask mt_sign_pretest(const MtNumerators<V>& c, typename V::Mask active,
+                                                V neg_lo, V hi) {
+  const V zero = V::broadcast(0.0f);
+  const V u = zero - c.un, v = c.vn + zero;
+  const V w = c.adet - (u + v);
+  const V low = TminZero ? c.tn + zero : fmadd(neg_lo, c.adet, c.tn);
+  const V nearer = fmsub(hi, c.adet, c.tn);
+  return active & sign_clear(or3(or3(u, v, w), low, nearer));
+}
+
+
 
 template <class V, bool TminZero>
 RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
@@ -287,12 +323,15 @@ struct MtBest {
 
 template <class V, bool TminZero>
 RAYVEC_INLINE void mt_closest_step(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
-                                   typename V::Mask active, V lo, MtBest<V>& b) {
-  const MtNumerators<V> c = mt_numerators<V, TminZero>(T, i, r, active, lo, b.hi);
-  if (!any(c.mask)) return;
-  // exact depth test, only for steps where a lane may be nearer; ties go to the lower id later
+                                   typename V::Mask active, V neg_lo, MtBest<V>& b) {
+  const MtNumerators<V> c = mt_numerator_values<V>(T, MtTriangleLanes<V>{i}, r);
+  const typename V::Mask pre = mt_sign_pretest<V, TminZero>(c, active, neg_lo, b.hi);
+  if (!any(pre)) return;
+  // the ordered tests (NaN and |det| = 0 fail them) and the exact depth test, only for steps where
+  // a lane may be nearer; ties go to the lower id later
   const V t = c.tn / c.adet;
-  const typename V::Mask m = c.mask & (t >= r.tmin) & (t < b.t);
+  const typename V::Mask m = pre & mt_edges(c) & (c.adet > V::broadcast(0.0f)) & (t >= r.tmin) &
+                             (t < b.t);
   if (!any(m)) return;
   b.t = select(m, b.t, t);
   b.un = select(m, b.un, c.un);
@@ -351,15 +390,19 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
                            Hit* hits) {
   constexpr int W = V::W;
   MtRay<V> q[R];
-  for (int k = 0; k < R; ++k) q[k] = mt_ray<V>(rays[k], hits[k]);
+  V neg_lo[R];  // −lo, for mt_sign_pretest's fused t·|det| − lo·|det|
+  for (int k = 0; k < R; ++k) {
+    q[k] = mt_ray<V>(rays[k], hits[k]);
+    neg_lo[k] = V::broadcast(0.0f) - q[k].lo;
+  }
   // full steps without a lane mask, then the partial last step
   const typename V::Mask all = first_lanes(V{}, W);
   uint32_t i = begin;
   for (; end - i >= uint32_t(W) && i < end; i += W)
-    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero>(T, i, q[k].r, all, q[k].lo, q[k].b);
+    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero>(T, i, q[k].r, all, neg_lo[k], q[k].b);
   if (i < end)
     for (int k = 0; k < R; ++k)
-      mt_closest_step<V, TminZero>(T, i, q[k].r, first_lanes(V{}, end - i), q[k].lo, q[k].b);
+      mt_closest_step<V, TminZero>(T, i, q[k].r, first_lanes(V{}, end - i), neg_lo[k], q[k].b);
   for (int k = 0; k < R; ++k) mt_finish<V>(T, q[k].b, q[k].initial, hits[k]);
 }
 

@@ -133,4 +133,15 @@ RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) {
 RAYVEC_INLINE vfloat vmin(vfloat a, vfloat b) { return {_mm512_maskz_min_ps(__mmask16(0xffff), a.v, b.v)}; }
 RAYVEC_INLINE vfloat vmax(vfloat a, vfloat b) { return {_mm512_maskz_max_ps(__mmask16(0xffff), a.v, b.v)}; }
 
+// Bitwise or of three vectors, and the lanes whose sign bit is clear (+0, positive, +inf, or a NaN
+// with a clear sign): the float `mt` pre-test ORs its values and tests the sign once
+// (moller_trumbore.inl, mt_sign_pretest).
+RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) {
+  return {_mm512_castsi512_ps(_mm512_ternarylogic_epi32(
+      _mm512_castps_si512(a.v), _mm512_castps_si512(b.v), _mm512_castps_si512(c.v), 0xFE))};
+}
+RAYVEC_INLINE vmaskf sign_clear(vfloat a) {
+  return {_mm512_testn_epi32_mask(_mm512_castps_si512(a.v), _mm512_set1_epi32(INT32_MIN))};
+}
+
 }  // namespace rayvec::avx512
