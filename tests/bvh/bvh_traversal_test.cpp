@@ -111,6 +111,28 @@ TEST_P(BvhTraversal, MatchesBruteForceOnCoplanarTrianglesAndAxisParallelRays) {
   expect_same(g, rays);
 }
 
+// tmin < 0 takes the box test with per-node widening, tmin >= 0 (also -0) the forward one whose
+// widening is folded into scaled reciprocals (bvh_traversal.inl): both must equal brute force.
+TEST_P(BvhTraversal, MatchesBruteForceWithNegativeAndZeroTmin) {
+  std::vector<Ray> rays = test::random_rays(1200, 1.5f, 15);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    if (i % 3 == 0) rays[i].tmin = -(0.05f + 0.4f * float(i % 9));
+    if (i % 3 == 1) rays[i].tmin = -0.0f;
+  }
+  expect_same(test::random_soup(1500, 0.1f, 16), rays);
+  expect_same(test::sphere(1.0f, 30, 40), rays);
+  // a flat grid (zero-thickness boxes) behind origins pointing away from it: only a negative tmin
+  // reaches it, where scaled reciprocals would make entry > exit and miss (the `paper` kernel
+  // accepts t > 1e-6 only, so every fourth ray points at the grid)
+  std::vector<Ray> away;
+  for (int i = 0; i < 200; ++i) {
+    const float x = 0.37f + 0.093f * float(i), y = 0.21f + 0.071f * float(i % 50);
+    const float dz = i % 4 == 0 ? -1.0f : 1.0f;
+    away.push_back(Ray{{x, y, 1.0f + 0.01f * float(i % 7)}, {0.01f * float(i % 5), 0.0f, dz}, -3.0f});
+  }
+  expect_same(test::flat_grid(20), away);
+}
+
 TEST_P(BvhTraversal, MatchesBruteForceOnTinyAndEmptyMeshes) {
   const std::vector<Ray> rays = test::random_rays(500, 1.5f, 10);
   TriangleMesh one;
