@@ -1,5 +1,5 @@
 // The variant traversal of bvh_bench (trv=1): the .inl named by -DRV_VARIANT_INL (by default the
-// tree's own bvh_traversal.inl) compiled as an AVX-512 unit, 8-wide nodes.
+// tree's own bvh_traversal.inl) compiled as an AVX-512 unit, 8- or 16-wide nodes.
 #include <cstdint>
 
 #include "bvh/bvh_kernels.h"
@@ -16,12 +16,7 @@ namespace rayvec::avx512::variant_unit {
 namespace rayvec::variant {
 void closest(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
              const Ray& ray, Hit& hit) {
-#ifdef RV_FAST
-  if (bvh.width == 16) avx512::variant_unit::fast_closest<avx512::variant_unit::Fast16>(bvh, tris, kernels, ray, hit);
-  else avx512::variant_unit::fast_closest<avx512::variant_unit::Fast8>(bvh, tris, kernels, ray, hit);
-#else
   if (bvh.width == 16) avx512::variant_unit::bvh_closest<avx512::BoxLanes16>(bvh, tris, kernels, ray, hit);
   else avx512::variant_unit::bvh_closest<avx512::BoxLanes8>(bvh, tris, kernels, ray, hit);
-#endif
 }
 }  // namespace rayvec::variant
