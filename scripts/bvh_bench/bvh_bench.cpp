@@ -7,6 +7,9 @@
 //   bvh_bench MODEL.obj [ROUNDS] VARIANT...
 //   VARIANT = name:key=value,key=value  (keys: block, max_leaf, trav, bins, width, trv=0|1)
 // trv=1 traverses with the variant traversal compiled into this harness (variant_avx512.cpp).
+//   bvh_bench MODEL.obj phases [ROUNDS]   build phases (binary SAH, collapse, TriangleSoA fill) at
+//                                         OMP_NUM_THREADS threads: wall and process CPU seconds
+// RV_SIDE=N traces N×N primary rays instead of 1024×1024.
 #include <time.h>
 
 #include <algorithm>
