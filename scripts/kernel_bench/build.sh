@@ -5,6 +5,7 @@
 #   RV_VARIANT=1 OUT/kernel_bench_foundation 50000 64 mt 0   # the foundation kernel (commit 7311440)
 #   OUT/kernel_bench_early 10000 100 mt 0 ; RV_VARIANT=1 OUT/kernel_bench_early 10000 100 mt 0
 #   RV_AB=1 OUT/kernel_bench_sign 50000 200 mt 64            # product vs variant, paired in one process
+#   RV_AB=1 OUT/kernel_bench_prev 50000 100 mt 64            # today's kernel vs the one before row 11
 # Arguments: triangles, image side of the ray subset, intersector, rays per closest_batch call
 # (0 = one closest call per ray). Prints G tests/s on the thread's CPU time and tests/cycle against
 # a dependent-add loop timed the same way (see kernel_bench.cpp for RV_AB / RV_REPS).
@@ -18,11 +19,13 @@ isa="-mavx2 -mfma -mavx512f -mavx512dq -mavx512bw -mavx512vl -ffp-contract=off"
 git -C "$here" show 7311440:src/kernels/moller_trumbore.inl > "$out/foundation_mt.inl"
 # variants written against the kernel as of 96ea2dd (before the packet refactor), pinned
 git -C "$here" show 96ea2dd:src/kernels/moller_trumbore.inl > "$out/pinned_mt.inl"
+git -C "$here" show c06ea87:src/kernels/moller_trumbore.inl > "$out/prev_mt.inl"  # before row 11
 g++ -std=c++20 -O3 $isa -I"$src" -I"$out" -c "$here/foundation_variant.cpp" -o "$out/foundation.o"
 g++ -std=c++20 -O3 $isa -I"$src" -I"$out" -c "$here/early_outs_variant.cpp" -o "$out/early.o"
 g++ -std=c++20 -O3 $isa -I"$src" -I"$out" -c "$here/sign_test_variant.cpp" -o "$out/sign.o"
-for v in foundation early sign; do
+g++ -std=c++20 -O3 $isa -I"$src" -I"$out" -c "$here/prev_variant.cpp" -o "$out/prev.o"
+for v in foundation early sign prev; do
   g++ -std=c++20 -O2 -I"$src" "$here/kernel_bench.cpp" "$out/$v.o" "$build/librayvec.a" -fopenmp \
       -o "$out/kernel_bench_$v"
 done
-echo "built $out/kernel_bench_foundation, _early and _sign"
+echo "built $out/kernel_bench_foundation, _early, _sign and _prev"

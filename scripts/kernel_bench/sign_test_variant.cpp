@@ -11,14 +11,7 @@
 namespace rayvec::avx512 { namespace sgn {
 #include "pinned_mt.inl"  // git show 96ea2dd:src/kernels/moller_trumbore.inl (build.sh)
 
-RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) {
-  return {_mm512_castsi512_ps(_mm512_ternarylogic_epi32(_mm512_castps_si512(a.v), _mm512_castps_si512(b.v),
-                                                        _mm512_castps_si512(c.v), 0xFE))};
-}
-RAYVEC_INLINE vmaskf sign_clear(vfloat a) {
-  const __m512i s = _mm512_set1_epi32(INT32_MIN);
-  return {_mm512_testn_epi32_mask(_mm512_castps_si512(a.v), s)};
-}
+// or3 and sign_clear: vfloat_avx512.h (added with row 11, which this variant prototyped)
 
 template <bool TminZero>
 RAYVEC_INLINE void step(const TriangleArrays& T, uint32_t i, const RayLanes<vfloat>& r, vmaskf active,

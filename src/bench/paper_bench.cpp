@@ -54,14 +54,15 @@ double median(std::vector<double> v) {
 }
 
 // Runs `fn` at least `min_runs` times and until `min_seconds` have passed in total (at most 15 runs,
-// or min_runs if larger); the median. With `calibrate`, the core clock is measured before each run.
+// or min_runs if larger); the median. With `calibrate`, the core clock is measured before each of the
+// first kVectorizedMinRuns runs (--quick repeats short runs up to 15 times; the clock needs fewer).
 template <typename Fn>
 Timing time_median(double min_seconds, bool thread_cpu, Fn&& fn, int min_runs = 1,
                    bool calibrate = false) {
   std::vector<double> runs, clocks;
   double total = 0;
   do {
-    if (calibrate) clocks.push_back(measure_clock_ghz());
+    if (calibrate && int(clocks.size()) < kVectorizedMinRuns) clocks.push_back(measure_clock_ghz());
     const double start = now(thread_cpu);
     fn();
     const double s = now(thread_cpu) - start;
