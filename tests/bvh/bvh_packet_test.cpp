@@ -16,26 +16,13 @@
 #include "accel/brute_force.h"
 #include "accel/bvh.h"
 #include "bvh/bvh_kernels.h"
+#include "bvh_cases.h"
 #include "bvh_scenes.h"
 
 namespace rayvec {
 namespace {
 
-struct Case {
-  Isa isa;
-  Intersector intersector;
-  int width;
-};
-
-std::vector<Case> packet_cases() {
-  std::vector<Case> cases;
-  for (Isa isa : kAllIsas) {
-    const BvhWidths w = bvh_widths(isa);
-    for (Intersector i : {Intersector::mt, Intersector::paper, Intersector::watertight})
-      for (int k = 0; k < w.count; ++k) cases.push_back({isa, i, w.widths[k]});
-  }
-  return cases;
-}
+using Case = test::BvhCase;
 
 uint32_t bits(float x) { return std::bit_cast<uint32_t>(x); }
 
@@ -175,13 +162,10 @@ TEST_P(BvhPacket, AxisParallelLanesOnTheRootBoxPlanes) {
   EXPECT_GT(expect_exact(grid, rays), 100);
 }
 
-std::string case_name(const ::testing::TestParamInfo<Case>& info) {
-  return std::string(isa_name(info.param.isa)) + "_" + intersector_name(info.param.intersector) +
-         "_w" + std::to_string(info.param.width);
-}
-
-INSTANTIATE_TEST_SUITE_P(AllIsasIntersectorsWidths, BvhPacket, ::testing::ValuesIn(packet_cases()),
-                         case_name);
+INSTANTIATE_TEST_SUITE_P(
+    AllIsasIntersectorsWidths, BvhPacket,
+    ::testing::ValuesIn(test::bvh_cases({Intersector::mt, Intersector::paper, Intersector::watertight})),
+    test::bvh_case_name);
 
 }  // namespace
 }  // namespace rayvec

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,26 +11,13 @@
 #include "accel/brute_force.h"
 #include "accel/bvh.h"
 #include "bvh/bvh_kernels.h"
+#include "bvh_cases.h"
 #include "bvh_scenes.h"
 
 namespace rayvec {
 namespace {
 
-struct Case {
-  Isa isa;
-  Intersector intersector;
-  int width;
-};
-
-std::vector<Case> all_cases() {
-  std::vector<Case> cases;
-  for (Isa isa : kAllIsas) {
-    const BvhWidths w = bvh_widths(isa);
-    for (Intersector i : kAllIntersectors)
-      for (int k = 0; k < w.count; ++k) cases.push_back({isa, i, w.widths[k]});
-  }
-  return cases;
-}
+using Case = test::BvhCase;
 
 class BvhTraversal : public ::testing::TestWithParam<Case> {
  protected:
@@ -213,13 +201,10 @@ TEST_P(BvhTraversal, NonFiniteRaysMiss) {
   expect_same(s, {Ray{{0, 0, 0}, {0, 0, 0}}, Ray{{0, 0, 0}, {1, 0, 0}, -inf, inf}});
 }
 
-std::string case_name(const ::testing::TestParamInfo<Case>& info) {
-  return std::string(isa_name(info.param.isa)) + "_" + intersector_name(info.param.intersector) +
-         "_w" + std::to_string(info.param.width);
-}
-
-INSTANTIATE_TEST_SUITE_P(AllIsasIntersectorsWidths, BvhTraversal, ::testing::ValuesIn(all_cases()),
-                         case_name);
+INSTANTIATE_TEST_SUITE_P(
+    AllIsasIntersectorsWidths, BvhTraversal,
+    ::testing::ValuesIn(test::bvh_cases({std::begin(kAllIntersectors), std::end(kAllIntersectors)})),
+    test::bvh_case_name);
 
 }  // namespace
 }  // namespace rayvec
