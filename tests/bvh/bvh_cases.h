@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "accel/accelerator.h"
 #include "bvh/bvh_kernels.h"
 #include "kernels/intersector.h"
 #include "kernels/isa.h"
@@ -28,6 +29,16 @@ inline std::vector<BvhCase> bvh_cases(const std::vector<Intersector>& intersecto
   }
   return cases;
 }
+
+// Base fixture: skips (by name) the cases whose ISA the CPU lacks; config() is the case's tracer.
+class BvhCaseTest : public ::testing::TestWithParam<BvhCase> {
+ protected:
+  void SetUp() override {
+    if (!isa_supported(GetParam().isa))
+      GTEST_SKIP() << "CPU lacks " << isa_name(GetParam().isa) << ": skipped";
+  }
+  TraceConfig config() const { return {GetParam().isa, GetParam().intersector}; }
+};
 
 inline std::string bvh_case_name(const ::testing::TestParamInfo<BvhCase>& info) {
   return std::string(isa_name(info.param.isa)) + "_" + intersector_name(info.param.intersector) +

@@ -40,13 +40,8 @@ std::vector<Ray> camera_tiles(Vec3f eye, int w, int h, float half_width, float t
   return rays;
 }
 
-class BvhPacket : public ::testing::TestWithParam<Case> {
+class BvhPacket : public test::BvhCaseTest {
  protected:
-  void SetUp() override {
-    if (!isa_supported(GetParam().isa))
-      GTEST_SKIP() << "CPU lacks " << isa_name(GetParam().isa) << ": skipped";
-  }
-  TraceConfig config() const { return {GetParam().isa, GetParam().intersector}; }
 
   // closest_stream over rays[0..n) against closest() per ray and brute force; returns the hits.
   int expect_exact(const TriangleMesh& mesh, const std::vector<Ray>& rays,

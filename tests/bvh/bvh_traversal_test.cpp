@@ -19,13 +19,8 @@ namespace {
 
 using Case = test::BvhCase;
 
-class BvhTraversal : public ::testing::TestWithParam<Case> {
+class BvhTraversal : public test::BvhCaseTest {
  protected:
-  void SetUp() override {
-    if (!isa_supported(GetParam().isa))
-      GTEST_SKIP() << "CPU lacks " << isa_name(GetParam().isa) << ": skipped";
-  }
-  TraceConfig config() const { return {GetParam().isa, GetParam().intersector}; }
   // The double kernels order hits by their unrounded t inside one call but only see the float t of
   // an earlier result (Hit::t), so two hits whose t rounds to the same float may be resolved
   // differently by one brute-force call and by several leaf calls: accept either id then.
