@@ -325,8 +325,12 @@ class Builder {
     const uint32_t left = next_node_.fetch_add(2);
     new (nodes_.get() + node) BinaryNode{box, left, 0};
     if (n >= config_.task_threshold) {
+      // both halves as tasks: a taskwait waits for every child of the current task, so a right
+      // half built in place would, at its first binning taskwait, also wait for (and usually run)
+      // the whole left half — which serialised the build
 #pragma omp task firstprivate(left, begin, mid, left_box, depth)
       build(left, begin, mid, left_box, depth + 1);
+#pragma omp task firstprivate(left, mid, end, right_box, depth)
       build(left + 1, mid, end, right_box, depth + 1);
 #pragma omp taskwait
     } else {
