@@ -112,16 +112,15 @@ int run(const Options& o) {
 
   const auto ours = make_accelerator_tracer(bvh);
   const BenchRays rays = make_bench_rays(mesh, width, height, *ours);
-  const TracerRun run = run_bench_rays(*ours, rays, o.repeats);
-
   double embree_build_s = 0;
-  TracerRun rival_run;
-  Mismatches mismatches;
-  if (o.vs_embree) {
-    const auto embree = make_embree_tracer(mesh, threads, embree_build_s);
-    rival_run = run_bench_rays(*embree, rays, o.repeats);
-    mismatches = count_mismatches(run, rival_run);
-  }
+  std::unique_ptr<RayTracer> embree;
+  if (o.vs_embree) embree = make_embree_tracer(mesh, threads, embree_build_s);
+  std::vector<const RayTracer*> tracers{ours.get()};
+  if (embree) tracers.push_back(embree.get());
+  const std::vector<TracerRun> runs = run_bench_rays(tracers, rays, o.repeats);
+  const TracerRun& run = runs[0];
+  const TracerRun rival_run = embree ? runs[1] : TracerRun{};
+  const Mismatches mismatches = embree ? count_mismatches(run, rival_run) : Mismatches{};
 
   if (o.json) {
     std::printf("{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
@@ -144,9 +143,10 @@ int run(const Options& o) {
     std::printf("}\n");
     return 0;
   }
-  std::printf("model: %s, %zu triangles; %dx%d; median of %d runs after a warm-up (%s clock; "
+  std::printf("model: %s, %zu triangles; %dx%d; median of %d runs after a warm-up%s (%s clock; "
               "builds: wall clock)\n",
               o.model.c_str(), mesh.size(), width, height, o.repeats,
+              embree ? ", interleaved with embree's" : "",
               bench_uses_thread_cpu_time() ? "thread CPU-time" : "wall");
   std::printf("cpu: %s; isa: %s; intersector: %s; threads: %d\n", cpu_features().brand.c_str(),
               isa_name(config.isa), intersector_name(config.intersector), threads);

@@ -23,18 +23,26 @@ double clock_seconds(bool thread_cpu) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// trace(k) runs tracer k once. Returns the median time of each tracer over `repeats` interleaved runs.
 template <class F>
-double median_seconds(F&& trace, int repeats) {
+std::vector<double> median_seconds(F&& trace, std::size_t tracers, int repeats) {
   const bool thread_cpu = bench_uses_thread_cpu_time();
-  trace();  // warm-up: page in the tree, settle the clocks
-  std::vector<double> times;
-  for (int r = 0; r < std::max(1, repeats); ++r) {
-    const double t0 = clock_seconds(thread_cpu);
-    trace();
-    times.push_back(clock_seconds(thread_cpu) - t0);
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+  for (std::size_t k = 0; k < tracers; ++k) trace(k);  // warm-up: page in the tree, settle the clocks
+  std::vector<std::vector<double>> times(tracers);
+  for (int r = 0; r < std::max(1, repeats); ++r)
+    for (std::size_t k = 0; k < tracers; ++k) {
+      const double t0 = clock_seconds(thread_cpu);
+      trace(k);
+      times[k].push_back(clock_seconds(thread_cpu) - t0);
+    }
+  std::vector<double> medians;
+  for (const auto& t : times) medians.push_back(median(t));
+  return medians;
 }
 
 void trace_closest(const RayTracer& t, const RaySet& set, std::vector<Hit>& hits) {
@@ -82,23 +90,34 @@ BenchRays make_bench_rays(const TriangleMesh& mesh, int width, int height, const
   return b;
 }
 
-TracerRun run_bench_rays(const RayTracer& t, const BenchRays& b, int repeats) {
-  TracerRun run;
-  run.primary_hits.resize(b.primary.rays.size());
-  run.packet_hits.resize(b.tiles.rays.size());
-  run.incoherent_hits.resize(b.incoherent.rays.size());
-  run.shadow_occluded.resize(b.shadow.rays.size());
-
-  double s = median_seconds([&] { trace_closest(t, b.primary, run.primary_hits); }, repeats);
-  run.primary = summarize(b.primary, run.primary_hits, s);
-  s = median_seconds([&] { trace_tiles(t, b, run.packet_hits); }, repeats);
-  run.primary_packet = summarize(b.tiles, run.packet_hits, s);
-  s = median_seconds([&] { trace_occluded(t, b.shadow, run.shadow_occluded); }, repeats);
-  run.shadow = SetResult{b.shadow.rays.size(), 0, occluded_checksum(b.shadow, run.shadow_occluded), s};
-  for (uint8_t o : run.shadow_occluded) run.shadow.hits += o;
-  s = median_seconds([&] { trace_closest(t, b.incoherent, run.incoherent_hits); }, repeats);
-  run.incoherent = summarize(b.incoherent, run.incoherent_hits, s);
-  return run;
+std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& tracers,
+                                      const BenchRays& b, int repeats) {
+  const std::size_t n = tracers.size();
+  std::vector<TracerRun> runs(n);
+  for (TracerRun& run : runs) {
+    run.primary_hits.resize(b.primary.rays.size());
+    run.packet_hits.resize(b.tiles.rays.size());
+    run.incoherent_hits.resize(b.incoherent.rays.size());
+    run.shadow_occluded.resize(b.shadow.rays.size());
+  }
+  auto s = median_seconds([&](std::size_t k) { trace_closest(*tracers[k], b.primary, runs[k].primary_hits); },
+                          n, repeats);
+  for (std::size_t k = 0; k < n; ++k) runs[k].primary = summarize(b.primary, runs[k].primary_hits, s[k]);
+  s = median_seconds([&](std::size_t k) { trace_tiles(*tracers[k], b, runs[k].packet_hits); }, n, repeats);
+  for (std::size_t k = 0; k < n; ++k)
+    runs[k].primary_packet = summarize(b.tiles, runs[k].packet_hits, s[k]);
+  s = median_seconds(
+      [&](std::size_t k) { trace_occluded(*tracers[k], b.shadow, runs[k].shadow_occluded); }, n, repeats);
+  for (std::size_t k = 0; k < n; ++k) {
+    TracerRun& run = runs[k];
+    run.shadow = SetResult{b.shadow.rays.size(), 0, occluded_checksum(b.shadow, run.shadow_occluded), s[k]};
+    for (uint8_t o : run.shadow_occluded) run.shadow.hits += o;
+  }
+  s = median_seconds(
+      [&](std::size_t k) { trace_closest(*tracers[k], b.incoherent, runs[k].incoherent_hits); }, n, repeats);
+  for (std::size_t k = 0; k < n; ++k)
+    runs[k].incoherent = summarize(b.incoherent, runs[k].incoherent_hits, s[k]);
+  return runs;
 }
 
 Mismatches count_mismatches(const TracerRun& a, const TracerRun& b) {

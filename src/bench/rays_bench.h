@@ -37,7 +37,12 @@ struct TracerRun {
   std::vector<Hit> primary_hits, packet_hits, incoherent_hits;  // packet_hits in tile order
   std::vector<uint8_t> shadow_occluded;
 };
-TracerRun run_bench_rays(const RayTracer& tracer, const BenchRays& rays, int repeats);
+// Traces every set with every tracer. The runs are interleaved — for each set, one warm-up per
+// tracer, then repeat r of tracer 0, repeat r of tracer 1, … — so that the tracers share the same
+// stretches of machine time: on a VM whose speed drifts for seconds at a time, timing one tracer's
+// five runs and then the other's would put the drift into the ratio. One TracerRun per tracer.
+std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& tracers,
+                                      const BenchRays& rays, int repeats);
 
 // Rays whose triangle id (or occlusion) differs between two runs, per set.
 struct Mismatches {
