@@ -161,21 +161,39 @@ std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa is
   const std::vector<Ray> rays = to_rays(paper_camera_rays(side));
   const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, intersector});
   std::vector<Hit> reference(rays.size()), hits(rays.size());
-  std::vector<ScalingResult> out;
-  for (int threads = 1; threads <= max_threads; ++threads) {
-    if (progress)
-      progress(std::to_string(triangles) + " triangles, " + intersector_name(intersector) + ", " +
-               std::to_string(threads) + " thread(s)");
-    ScalingResult r;
+  // The thread counts take turns, one run each per round, until each has run for min_seconds and
+  // kScalingMinRuns rounds (at most 15 rounds): on a VM whose speed drifts for seconds at a time, timing all one-thread runs
+  // and then all two-thread runs would put the drift into the speedup.
+  std::vector<ScalingResult> out(std::size_t(std::max(max_threads, 1)));
+  std::vector<std::vector<double>> runs(out.size());
+  std::vector<double> total(out.size(), 0.0);
+  for (int round = 0; round < 15; ++round) {
+    bool done = round > 0;
+    for (int threads = 1; threads <= int(out.size()); ++threads) {
+      const std::size_t k = std::size_t(threads - 1);
+      const int min_runs = min_seconds > 0 ? kScalingMinRuns : 1;
+      if (round > 0 && total[k] >= min_seconds && int(runs[k].size()) >= min_runs) continue;
+      done = false;
+      if (progress && round == 0)
+        progress(std::to_string(triangles) + " triangles, " + intersector_name(intersector) + ", " +
+                 std::to_string(threads) + " thread(s)");
+      std::vector<Hit>& dst = threads == 1 ? reference : hits;
+      const double start = now(false);
+      trace_vectorized(*accel, rays, dst, threads);
+      runs[k].push_back(now(false) - start);
+      total[k] += runs[k].back();
+      if (threads > 1 && round == 0)
+        for (std::size_t i = 0; i < rays.size(); ++i) out[k].mismatches += !same_hit(hits[i], reference[i]);
+    }
+    if (done) break;
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    ScalingResult& r = out[k];
     r.side = side;
     r.triangles = triangles;
-    r.threads = uint32_t(threads);
+    r.threads = uint32_t(k + 1);
     r.intersector = intersector;
-    std::vector<Hit>& dst = threads == 1 ? reference : hits;
-    r.time = time_median(min_seconds, false, [&] { trace_vectorized(*accel, rays, dst, threads); });
-    if (threads > 1)
-      for (std::size_t i = 0; i < rays.size(); ++i) r.mismatches += !same_hit(hits[i], reference[i]);
-    out.push_back(r);
+    r.time = Timing{median(runs[k]), int(runs[k].size()), 0.0};
   }
   return out;
 }

@@ -74,7 +74,12 @@ inline constexpr int kVectorizedMinRuns = 5;
 Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, bool baselines,
                             double min_seconds, const Progress& progress);
 
-// The vectorized brute force at 1..max_threads threads for one scaling size and intersector.
+// Timed runs of each thread count in the scaling run at least (unless min_seconds is 0): the 50,000
+// triangle size takes ~3.5 s a run on one thread, so it used to be a single sample.
+inline constexpr int kScalingMinRuns = 3;
+
+// The vectorized brute force at 1..max_threads threads for one scaling size and intersector, the
+// thread counts timed in turns (one run each per round), medians on the wall clock.
 std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa,
                                        Intersector intersector, int max_threads,
                                        double min_seconds, const Progress& progress);
