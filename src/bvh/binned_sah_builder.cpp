@@ -16,7 +16,7 @@ namespace {
 
 constexpr int kMaxBins = 64;
 constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr uint32_t kParallelBinning = 1u << 16;  // ranges this large bin in parallel chunks
+constexpr uint32_t kParallelBinning = 1u << 16;  // ranges this large may bin in parallel chunks
 constexpr int kBinningChunks = 4;
 constexpr std::size_t kParallelBuild = 16384;  // fewer triangles: build on the calling thread
 
@@ -113,7 +113,7 @@ class Builder {
     const auto n = static_cast<uint32_t>(count_);
 #pragma omp parallel if (n >= kParallelBuild)
 #pragma omp single nowait
-    build(0, 0, n, range_box(0, n, false), 0);
+    build(0, 0, n, range_box(0, n, false, 0), 0);
     out_.nodes.assign(nodes_.get(), nodes_.get() + next_node_.load());
     nodes_.reset();
   }
@@ -123,6 +123,14 @@ class Builder {
     float lo[3], scale[3];
   };
 
+  // Whether a range of n primitives at this depth is worked on in chunks as tasks: only while the
+  // tree has fewer ranges at this depth than threads (2^depth < threads). Below that the subtrees
+  // alone keep every thread busy, and chunking costs more than it gains (the two-pass partition
+  // moves the range twice; the chunked binning merges 4 sets of bins).
+  bool chunked(uint32_t n, int depth) const {
+    return n >= kParallelBinning && depth < 30 && (1 << depth) < threads_;
+  }
+
   void bin_range(uint32_t begin, uint32_t end, const Range& r, Bins& out) const {
     for (uint32_t i = begin; i < end; ++i) {
       const Prim& p = prims_[i];
@@ -130,7 +138,7 @@ class Builder {
     }
   }
 
-  Split find_split(uint32_t begin, uint32_t end, const BBox& cbox) const {
+  Split find_split(uint32_t begin, uint32_t end, const BBox& cbox, int depth) const {
     const Vec3f ext = cbox.extent();
     Range r;
     for (int a = 0; a < 3; ++a) {
@@ -138,7 +146,7 @@ class Builder {
       r.scale[a] = ext[a] > 0.0f ? float(bins_) / ext[a] : 0.0f;
     }
     Bins bins;
-    if (end - begin >= kParallelBinning) {  // the top of the tree: bin chunks as tasks, merge
+    if (chunked(end - begin, depth)) {  // the top of the tree: bin chunks as tasks, merge
       Bins part[kBinningChunks];
       const uint32_t step = (end - begin + kBinningChunks - 1) / kBinningChunks;
       for (int c = 0; c < kBinningChunks; ++c) {
@@ -211,9 +219,9 @@ class Builder {
 
   // Bounds of the boxes (or centroids) of a range; large ranges in chunks as tasks (min and max
   // are exact, so the result does not depend on the chunking).
-  BBox range_box(uint32_t begin, uint32_t end, bool centroids) const {
+  BBox range_box(uint32_t begin, uint32_t end, bool centroids, int depth) const {
     BinBox b;
-    if (end - begin >= kParallelBinning) {
+    if (chunked(end - begin, depth)) {
       BinBox part[kBinningChunks];
       const uint32_t step = (end - begin + kBinningChunks - 1) / kBinningChunks;
       for (int c = 0; c < kBinningChunks; ++c) {
@@ -236,9 +244,9 @@ class Builder {
   // std::partition, which moves less memory. The order inside each side does not matter: every later decision
   // depends only on the set of primitives in a range.
   template <class F>
-  uint32_t partition_range(uint32_t begin, uint32_t end, const F& goes_left) {
+  uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left) {
     Prim* data = prims_.get();
-    if (end - begin < kParallelBinning || !scratch_ || omp_get_num_threads() == 1)
+    if (!chunked(end - begin, depth) || !scratch_)
       return uint32_t(std::partition(data + begin, data + end, goes_left) - data);
     constexpr int C = kBinningChunks;
     const uint32_t step = (end - begin + C - 1) / C;
@@ -288,11 +296,11 @@ class Builder {
   void build(uint32_t node, uint32_t begin, uint32_t end, const BBox& box, int depth) {
     const uint32_t n = end - begin;
     if (n <= 1) return make_leaf(node, begin, end, box);
-    const BBox cbox = range_box(begin, end, true);
+    const BBox cbox = range_box(begin, end, true, depth);
 
     uint32_t mid = begin;
     BBox left_box, right_box;
-    const Split split = depth < config_.max_sah_depth ? find_split(begin, end, cbox) : Split{};
+    const Split split = depth < config_.max_sah_depth ? find_split(begin, end, cbox, depth) : Split{};
     if (split.axis >= 0) {
       const float area = box.half_area();
       const float split_cost = config_.traversal_cost + (area > 0.0f ? split.cost / area : 0.0f);
@@ -300,7 +308,7 @@ class Builder {
       const int axis = split.axis;
       const float lo = cbox.lo[axis], scale = float(bins_) / cbox.extent()[axis];
       const int bins = bins_, last_left = split.bin;
-      mid = partition_range(begin, end, [axis, lo, scale, bins, last_left](const Prim& p) {
+      mid = partition_range(begin, end, depth, [axis, lo, scale, bins, last_left](const Prim& p) {
         return bin_of(p.centroid(axis), lo, scale, bins) <= last_left;
       });
       left_box = split.left;
@@ -319,8 +327,8 @@ class Builder {
                          const float ca = a.centroid(axis), cb = b.centroid(axis);
                          return ca < cb || (ca == cb && a.id < b.id);
                        });
-      left_box = range_box(begin, mid, false);
-      right_box = range_box(mid, end, false);
+      left_box = range_box(begin, mid, false, depth);
+      right_box = range_box(mid, end, false, depth);
     }
     const uint32_t left = next_node_.fetch_add(2);
     new (nodes_.get() + node) BinaryNode{box, left, 0};
@@ -340,6 +348,7 @@ class Builder {
   }
 
   const SahConfig& config_;
+  const int threads_ = omp_get_max_threads();
   const int bins_;
   BinaryBvh& out_;
   std::unique_ptr<Prim[]> prims_;
