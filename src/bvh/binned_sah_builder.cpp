@@ -238,11 +238,11 @@ class Builder {
   }
 
   // Moves the primitives of [begin, end) for which goes_left(p) holds before the others and
-  // returns the first of the others. Large ranges with more than one thread: a stable two-pass
-  // partition in chunks as tasks (count, then scatter through scratch_ and copy back) — the root's
-  // partition was the largest serial step of the build; one thread keeps the in-place
-  // std::partition, which moves less memory. The order inside each side does not matter: every later decision
-  // depends only on the set of primitives in a range.
+  // returns the first of the others. Chunked ranges (see chunked()): a stable two-pass partition
+  // in chunks as tasks (count, then scatter through scratch_ and copy back) — the root's partition
+  // was the largest serial step of the build; other ranges keep the in-place std::partition, which
+  // moves less memory. The order inside each side does not matter: every later decision depends
+  // only on the set of primitives in a range.
   template <class F>
   uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left) {
     Prim* data = prims_.get();
