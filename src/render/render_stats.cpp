@@ -5,10 +5,15 @@
 namespace rayvec {
 namespace {
 
+// printf into a string of whatever length the result needs (the JSON is longer than any fixed
+// buffer worth keeping on the stack: a 256-byte one used to cut it off mid-object).
 std::string format(const char* fmt, auto... args) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
+  const int n = std::snprintf(nullptr, 0, fmt, args...);
+  if (n <= 0) return {};
+  std::string out(std::size_t(n) + 1, '\0');
+  std::snprintf(out.data(), out.size(), fmt, args...);
+  out.resize(std::size_t(n));
+  return out;
 }
 
 }  // namespace
