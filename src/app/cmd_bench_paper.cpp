@@ -56,10 +56,10 @@ void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
               divisor > 1 ? (" — rays scaled: image side / " + std::to_string(divisor) + ", rays / " +
                              std::to_string(divisor * divisor) + " (approx.)").c_str()
                           : " — full paper sizes");
-  std::printf("%-6s %9s %6s | %9s %9s %9s %9s | %8s %8s | %8s %8s | %6s %6s %6s %6s | %5s %5s | %s\n",
+  std::printf("%-6s %9s %6s | %9s %9s %9s %9s | %8s %8s | %8s %8s | %6s %6s %6s %6s | %5s %5s %6s | %s\n",
               "model", "rays", "tris", "original", "optimized", "vec-paper", "vec-mt", "orig/vec",
               "opt/vec", "paper o/v", "paper p/v", "G/s o", "G/s p", "G/s vp", "G/s vm", "GHz",
-              "t/c vm", "mismatch");
+              "FMA/c", "t/c vm", "mismatch");
   double sum_o = 0, sum_p = 0, sum_po = 0, sum_pp = 0;
   int n = 0;
   for (const Table1Result& r : rows) {
@@ -67,22 +67,23 @@ void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
     const double sp = r.optimized.seconds / r.vec_paper.seconds;
     if (r.baselines) {
       std::printf("%-6s %9llu %6u | %9.4f %9.4f %9.4f %9.4f | %8.2f %8.2f | %8.2f %8.2f | %6.3f %6.3f "
-                  "%6.2f %6.2f | %5.2f %5.2f | %llu\n",
+                  "%6.2f %6.2f | %5.2f %5.2f %6.2f | %llu\n",
                   r.model.name, (unsigned long long)r.rays(), r.model.triangles, r.original.seconds,
                   r.optimized.seconds, r.vec_paper.seconds, r.vec_mt.seconds, so, sp,
                   r.model.speedup_original, r.model.speedup_optimized, gtests(r.tests(), r.original),
                   gtests(r.tests(), r.optimized), gtests(r.tests(), r.vec_paper),
-                  gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.tests_per_cycle(r.tests()),
-                  (unsigned long long)r.mismatches);
+                  gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.fma_per_cycle,
+                  r.vec_mt.tests_per_cycle(r.tests()), (unsigned long long)r.mismatches);
       sum_o += so, sum_p += sp, sum_po += r.model.speedup_original,
           sum_pp += r.model.speedup_optimized, ++n;
     } else {
       std::printf("%-6s %9llu %6u | %9s %9s %9.4f %9.4f | %8s %8s | %8.2f %8.2f | %6s %6s %6.2f "
-                  "%6.2f | %5.2f %5.2f | -\n",
+                  "%6.2f | %5.2f %5.2f %6.2f | -\n",
                   r.model.name, (unsigned long long)r.rays(), r.model.triangles, "-", "-",
                   r.vec_paper.seconds, r.vec_mt.seconds, "-", "-", r.model.speedup_original,
                   r.model.speedup_optimized, "-", "-", gtests(r.tests(), r.vec_paper),
-                  gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.tests_per_cycle(r.tests()));
+                  gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.fma_per_cycle,
+                  r.vec_mt.tests_per_cycle(r.tests()));
     }
   }
   if (n > 0)
@@ -92,7 +93,10 @@ void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
   std::printf("vec-paper and vec-mt: the vectorized brute force with the paper's arithmetic and with "
               "rayvec's default `mt`; speedups use vec-paper (the paper's vectorized version).\n");
   std::printf("vectorized columns: median of at least %d runs; GHz: the core clock measured before "
-              "each vec-mt run (dependent-add chain), t/c vm: vec-mt ray-triangle tests per cycle.\n",
+              "each vec-mt run (dependent-add chain), FMA/c: vector FMAs per cycle a throughput probe "
+              "got before each vec-mt run (2.00 = an uncontended core with two FMA pipes; lower = the "
+              "vector pipes are shared, e.g. with a VM neighbour, and t/c drops with it), t/c vm: "
+              "vec-mt ray-triangle tests per cycle.\n",
               kVectorizedMinRuns);
 }
 
@@ -134,9 +138,11 @@ void print_json(const Options& o, Isa isa, int threads, uint32_t table_divisor,
                   r.original.seconds, r.optimized.seconds, r.original.seconds / r.vec_paper.seconds,
                   r.optimized.seconds / r.vec_paper.seconds);
     std::printf("},\"clock_ghz\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
+                "\"fma_per_cycle\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
                 "\"tests_per_cycle\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
                 "\"repeats\":{\"vectorized_paper\":%d,\"vectorized_mt\":%d}",
-                r.vec_paper.ghz, r.vec_mt.ghz, r.vec_paper.tests_per_cycle(r.tests()),
+                r.vec_paper.ghz, r.vec_mt.ghz, r.vec_paper.fma_per_cycle, r.vec_mt.fma_per_cycle,
+                r.vec_paper.tests_per_cycle(r.tests()),
                 r.vec_mt.tests_per_cycle(r.tests()), r.vec_paper.repeats, r.vec_mt.repeats);
     std::printf(",\"gtests_per_s\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g",
                 gtests(r.tests(), r.vec_paper), gtests(r.tests(), r.vec_mt));

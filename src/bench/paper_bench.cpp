@@ -10,6 +10,7 @@
 
 #include "accel/accelerator.h"
 #include "bench/cpu_clock.h"
+#include "bench/fma_rate.h"
 #include "bench/paper_scene.h"
 #include "kernels/paper_baselines.h"
 
@@ -56,20 +57,25 @@ double median(std::vector<double> v) {
 // Runs `fn` at least `min_runs` times and until `min_seconds` have passed in total (at most 15 runs,
 // or min_runs if larger); the median. With `calibrate`, the core clock is measured before each of the
 // first kVectorizedMinRuns runs (--quick repeats short runs up to 15 times; the clock needs fewer).
+// `calibrate` also runs the FMA throughput probe of `isa` (bench/fma_rate.h) next to the clock.
 template <typename Fn>
 Timing time_median(double min_seconds, bool thread_cpu, Fn&& fn, int min_runs = 1,
-                   bool calibrate = false) {
-  std::vector<double> runs, clocks;
+                   bool calibrate = false, Isa isa = Isa::scalar) {
+  std::vector<double> runs, clocks, fmas;
   double total = 0;
   do {
-    if (calibrate && int(clocks.size()) < kVectorizedMinRuns) clocks.push_back(measure_clock_ghz());
+    if (calibrate && int(clocks.size()) < kVectorizedMinRuns) {
+      clocks.push_back(measure_clock_ghz());
+      const double per_ns = measure_fma_per_ns(isa);
+      if (clocks.back() > 0) fmas.push_back(per_ns / clocks.back());
+    }
     const double start = now(thread_cpu);
     fn();
     const double s = now(thread_cpu) - start;
     runs.push_back(s);
     total += s;
   } while (int(runs.size()) < min_runs || (total < min_seconds && runs.size() < 15));
-  return Timing{median(runs), int(runs.size()), median(clocks)};
+  return Timing{median(runs), int(runs.size()), median(clocks), median(fmas)};
 }
 
 std::vector<Ray> to_rays(const RayBatch& batch) {
@@ -127,13 +133,13 @@ Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, boo
     say("vectorized (paper)");
     const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, Intersector::paper});
     out.vec_paper = time_median(
-        min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_paper, 1); }, runs, true);
+        min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_paper, 1); }, runs, true, isa);
   }
   {
     say("vectorized (mt)");
     const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, Intersector::mt});
     out.vec_mt = time_median(
-        min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_mt, 1); }, runs, true);
+        min_seconds, true, [&] { trace_vectorized(*accel, rays, vec_mt, 1); }, runs, true, isa);
   }
   for (std::size_t i = 0; i < n; ++i) out.mt_differences += vec_mt[i].tri != vec_paper[i].tri;
   if (!baselines) return out;

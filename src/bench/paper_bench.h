@@ -33,6 +33,9 @@ struct Timing {
   double seconds = 0;
   int repeats = 0;
   double ghz = 0;  // vectorized Table 1 runs: median core clock measured before each run (else 0)
+  // Vectorized Table 1 runs: median vector FMAs per cycle of a throughput probe before each run
+  // (bench/fma_rate.h; 2 on an uncontended two-FMA-pipe core), else 0.
+  double fma_per_cycle = 0;
   // Tests per cycle of `tests` done in `seconds` at `ghz` (0 when the clock was not measured).
   double tests_per_cycle(double tests) const {
     return ghz > 0 && seconds > 0 ? tests / seconds / (ghz * 1e9) : 0;
@@ -70,7 +73,8 @@ inline constexpr int kVectorizedMinRuns = 5;
 
 // One Table 1 row on one thread: original and optimized (unless !baselines) and the vectorized
 // brute force of `isa` with the `paper` and `mt` intersectors; checks that ids agree. The vectorized
-// timings carry the core clock measured before each run (Timing::ghz).
+// timings carry the core clock and the FMA throughput measured before each run (Timing::ghz,
+// Timing::fma_per_cycle).
 Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, bool baselines,
                             double min_seconds, const Progress& progress);
 

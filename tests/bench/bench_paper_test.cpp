@@ -36,6 +36,8 @@ TEST(BenchPaper, JsonHasSeventeenRowsAndScaling) {
   EXPECT_EQ(count(r.out, "\"paper\":{"), 17);
   EXPECT_EQ(count(r.out, "\"tests_per_cycle\":{"), 17);  // with the clock measured in the run
   EXPECT_EQ(count(r.out, "\"clock_ghz\":{\"vectorized_paper\":0,"), 0);
+  EXPECT_EQ(count(r.out, "\"fma_per_cycle\":{"), 17);  // the throughput probe, measured too
+  EXPECT_EQ(count(r.out, "\"fma_per_cycle\":{\"vectorized_paper\":0,"), 0);
   // 3 sizes x 2 intersectors x threads 1..2
   EXPECT_EQ(count(r.out, "\"threads\":1,\"seconds\""), 6);
   EXPECT_EQ(count(r.out, "\"threads\":2,\"seconds\""), 6);

@@ -1,0 +1,27 @@
+// The share of the core's vector units this thread gets, measured. On this KVM machine the
+// brute-force kernel sometimes runs 15–30 % slower for seconds at a time while the clock
+// (cpu_clock.h, a latency chain) barely moves: something else — most likely another guest on the
+// physical core's SMT sibling — is using the vector pipes. A latency chain cannot see that; a
+// throughput loop can. So `bench paper` measures both and reports FMAs per cycle next to the
+// kernel's tests per cycle: 2.0 on an uncontended Zen 4/5 or Intel core with two FMA pipes, less
+// while the pipes are shared (docs/benchmarks.md, "Slow phases").
+#pragma once
+
+#include "kernels/isa.h"
+
+namespace rayvec {
+
+// Vector FMAs per nanosecond of thread CPU time at `isa`'s width (16 floats for avx512, 8 for
+// avx2; scalar: one float FMA written as a*b+c), from 12 independent accumulator chains — enough
+// to fill two pipes of 4-cycle latency — over about 10 ms. Divide by measure_clock_ghz() for FMAs
+// per cycle. 0 if the ISA is not supported by this CPU.
+double measure_fma_per_ns(Isa isa);
+
+namespace avx2 {
+double fma_per_ns();
+}
+namespace avx512 {
+double fma_per_ns();
+}
+
+}  // namespace rayvec
