@@ -1,10 +1,11 @@
-// The share of the core's vector units this thread gets, measured. On this KVM machine the
-// brute-force kernel sometimes runs 15–30 % slower for seconds at a time while the clock
-// (cpu_clock.h, a latency chain) barely moves: something else — most likely another guest on the
-// physical core's SMT sibling — is using the vector pipes. A latency chain cannot see that; a
-// throughput loop can. So `bench paper` measures both and reports FMAs per cycle next to the
-// kernel's tests per cycle: 2.0 on an uncontended Zen 4/5 or Intel core with two FMA pipes, less
-// while the pipes are shared (docs/benchmarks.md, "Slow phases").
+// The vector throughput this thread gets, measured. On this KVM machine the brute-force kernel
+// sometimes runs 15–30 % slower for seconds at a time while the clock (cpu_clock.h, a latency
+// chain) barely moves. A latency chain cannot see a neighbour sharing the vector pipes; a
+// throughput loop can. So `bench paper` measures both and prints FMAs per cycle next to the
+// kernel's tests per cycle: about 2 on an uncontended core with two FMA pipes (this machine reads
+// 2.0–2.1: the clock probe seems to read a few percent low), less while the pipes are shared. A
+// slow run with FMA/c still at 2 was slowed by something else — caches or memory, not the pipes
+// (docs/benchmarks.md, "Slow phases").
 #pragma once
 
 #include "kernels/isa.h"
