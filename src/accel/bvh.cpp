@@ -42,14 +42,10 @@ void Bvh::closest_stream(const Ray* rays, Hit* hits, std::size_t n) const {
   const int w = traversal_->closest_packet ? traversal_->packet_width : 0;
   std::size_t i = 0;
   for (; w > 0 && i + 1 < n; i += std::size_t(w)) {
+    // the packet resets the hits and drops the untraceable lanes itself, in SIMD
     const std::size_t count = std::min(n - i, std::size_t(w));
-    unsigned active = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-      hits[i + k] = Hit{};
-      if (traceable(rays[i + k])) active |= 1u << k;
-    }
-    if (active != 0)
-      traversal_->closest_packet(tree_.arrays(), tris_.arrays(), *kernels_, rays + i, hits + i, active);
+    traversal_->closest_packet(tree_.arrays(), tris_.arrays(), *kernels_, rays + i, hits + i,
+                               (1u << count) - 1u);
   }
   for (; i < n; ++i) hits[i] = closest(rays[i]);
 }

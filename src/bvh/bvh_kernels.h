@@ -19,8 +19,10 @@ struct BvhKernels {
   // Any hit (finite origin and direction) accepted by `filter` (may be null); exits at the first.
   bool (*occluded)(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                    const Ray& ray, const HitFilter* filter);
-  // Closest hits of the rays rays[k] for the lanes k set in `active` (k < packet_width), traversed
-  // as one packet; each hits[k] as closest() would give it. Null when the ISA has no packets.
+  // Closest hits of the rays rays[k] for the lanes k set in `active` (k < packet_width; the other
+  // rays are not read), traversed as one packet: each hits[k] is overwritten with what closest()
+  // gives from a miss (a miss for a ray Bvh would reject: NaN or infinite origin or direction, NaN
+  // tmin or tmax). Null when the ISA has no packets.
   void (*closest_packet)(const BvhArrays& bvh, const TriangleArrays& tris,
                          const TriangleKernels& kernels, const Ray* rays, Hit* hits, unsigned active);
   int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)

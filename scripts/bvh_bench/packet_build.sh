@@ -1,0 +1,33 @@
+#!/bin/sh
+# Builds packet_bench (packet_bench.cpp) against an existing Release build of librayvec.a, with one
+# variant packet traversal per NAME=INL[:CXXFLAGS] argument (INL: a copy of bvh/bvh_packet.inl, or
+# "tree" for the tree's own). Not part of the product build.
+#   scripts/bvh_bench/packet_build.sh BUILD_DIR fwd=/tmp/fwd.inl lanes4=tree:-DK=4 ...
+#   BUILD_DIR/packet_bench/packet_bench /tmp/lead/sphere4k.obj 9
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+src=$(cd "$here/../../src" && pwd)
+build=${1:?usage: packet_build.sh BUILD_DIR [NAME=INL[:CXXFLAGS]]...}
+shift
+out=${OUT:-$build/packet_bench}
+mkdir -p "$out"
+isa="-mavx2 -mfma -mbmi -mbmi2 -mlzcnt -mf16c -mpopcnt -mavx512f -mavx512dq -mavx512bw -mavx512vl -mavx512cd -ffp-contract=off -Wno-maybe-uninitialized"
+objs=""
+i=0
+for spec in "$@"; do
+  name=${spec%%=*}
+  rest=${spec#*=}
+  inl=${rest%%:*}
+  flags=""
+  case "$rest" in *:*) flags=${rest#*:} ;; esac
+  [ "$inl" = tree ] && inl="$src/bvh/bvh_packet.inl"
+  g++ -std=c++20 -O3 $isa -I"$src" -DRV_PACKET_INL="\"$inl\"" -DRV_VARIANT_NAME="\"$name\"" \
+      -DRV_VARIANT_NS=v$i $flags $RV_CXXFLAGS -c "$here/packet_variant_avx512.cpp" -o "$out/v$i.o" &
+  objs="$objs $out/v$i.o"
+  i=$((i + 1))
+  [ $((i % 2)) -eq 0 ] && wait
+done
+wait
+g++ -std=c++20 -O2 -I"$src" "$here/packet_bench.cpp" $objs "$build/librayvec.a" -ltinyobjloader -lOpenImageIO \
+    -lOpenImageIO_Util -lembree3 -lgmpxx -lgmp -fopenmp -o "$out/packet_bench"
+echo "built $out/packet_bench"
