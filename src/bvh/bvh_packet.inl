@@ -9,6 +9,10 @@
 // table (closest_pair, two lanes per call, measured slower than one: packets 1.1x single rays
 // instead of 1.5x). When only kSingleRayLanes or fewer lanes remain active in a subtree, the packet
 // has diverged: those lanes finish that subtree by single-ray traversal (bvh_closest_from).
+// Box tests: packets whose lanes all have tmin >= 0 (camera rays) take the forward test
+// (PK::Forward: one FMA a slab, the widening folded into the reciprocals as in the single-ray
+// forward test, and without per-lane blends when all lanes share the direction signs); the others
+// take the general test (PK::hits), as bvh_traversal.inl's tmin < 0 rays do.
 // Included by the ISA units after bvh_traversal.inl and mt_packet.inl (kThisIsa, vfloat of P lanes).
 
 inline constexpr int kSingleRayLanes = 2;
@@ -37,6 +41,115 @@ RAYVEC_INLINE unsigned packet_box_lanes(const float lo[3], const float hi[3], co
   tn = vmin(fmadd(abs(tn), vfloat::broadcast(-eps), tn), tn);  // inf − inf = NaN: keep tn
   tf = vmax(fmadd(abs(tf), vfloat::broadcast(eps), tf), tf);
   return bits(vmax(tn, tmin) <= vmin(tf, tmax)) & active;
+}
+
+// The general box test (any tmin, any direction): PK's, with the widening per child.
+template <class PK>
+struct PacketBoxes {
+  PK pk;
+  float eps;
+  template <int N>
+  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float* tn) const {
+    return pk.template hits<N>(b, k, active, eps, tn);
+  }
+  RAYVEC_INLINE void set_tmax(const float* t) { pk.set_tmax(t); }
+  RAYVEC_INLINE float max_tmax(unsigned lanes) const { return pk.max_tmax(lanes); }
+};
+
+// The per-packet state of the traversal: per-lane limits (see mt_packet_closest) and the leaf mode.
+struct PacketRun {
+  float* tmax;     // min(tmax, hit.t) per lane
+  float* initial;  // next_up(tmax) per lane
+  int leaf_mode;   // 0 ray by ray, 1 packet kernel with every tmin = 0, 2 packet kernel, no tmin = 0
+  const MtPacketRays<vfloat>& q;
+};
+
+RAYVEC_INLINE float vmax_abs(float a, float b) {
+  a = a < 0 ? -a : a;
+  b = b < 0 ? -b : b;
+  return a > b ? a : b;
+}
+
+// The traversal proper, from the root with the lanes `lanes`, box tests by `boxes` (PacketBoxes
+// or PK::Forward); the state set up by bvh_closest_packet.
+template <class B, class PK, class Boxes>
+void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                         const Ray* rays, Hit* hits, unsigned lanes, Boxes boxes, const PacketRun& run) {
+  constexpr int N = B::N;
+  constexpr int P = PK::P;
+  const WideNode<N>* nodes = static_cast<const WideNode<N>*>(bvh.nodes);
+  float* const tmax = run.tmax;
+  float* const initial = run.initial;
+  const int leaf_mode = run.leaf_mode;
+  const MtPacketRays<vfloat>& q = run.q;
+  PacketItem local[kLocalStack];
+  PacketItem* stack = bvh.stack_size <= kLocalStack
+                          ? local
+                          : static_cast<PacketItem*>(__builtin_alloca(bvh.stack_size * sizeof(PacketItem)));
+  uint32_t sp = 0;
+  uint32_t ref = 0;
+  for (;;) {
+    if (__builtin_popcount(lanes) <= kSingleRayLanes) {  // diverged: finish ray by ray
+      for (unsigned m = lanes; m != 0; m &= m - 1) {
+        const int k = __builtin_ctz(m);
+        bvh_closest_from<B>(bvh, tris, kernels, rays[k], hits[k], ref);
+        if (hits[k].t < tmax[k]) {
+          tmax[k] = hits[k].t;
+          initial[k] = next_up(tmax[k]);
+        }
+      }
+      boxes.set_tmax(tmax);
+    } else if (!(ref & kLeafFlag)) {
+      const WideNode<N>& node = nodes[ref];
+      uint32_t refs[N], masks[N];
+      float ts[N];
+      int count = 0;
+      alignas(64) float tn[P];
+      for (int c = 0; c < N && node.ref[c] != kEmptyRef; ++c) {
+        const unsigned m = boxes.template hits<N>(node.bounds, c, lanes, tn);
+        if (m == 0) continue;
+        const float d = PK::min_lanes(tn, m);
+        int j = count++;
+        while (j > 0 && ts[j - 1] < d) {  // descending: farthest first
+          refs[j] = refs[j - 1];
+          masks[j] = masks[j - 1];
+          ts[j] = ts[j - 1];
+          --j;
+        }
+        refs[j] = node.ref[c];
+        masks[j] = m;
+        ts[j] = d;
+      }
+      if (count > 0) {
+        for (int j = 0; j < count - 1; ++j) stack[sp++] = PacketItem{refs[j], masks[j], ts[j]};
+        ref = refs[count - 1];
+        lanes = masks[count - 1];
+        continue;
+      }
+    } else if (ref != kEmptyRef) {
+      const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
+      if (leaf_mode == 1) {
+        mt_packet_closest<vfloat, true>(tris, begin, end, q, lanes, tmax, initial, hits);
+      } else if (leaf_mode == 2) {
+        mt_packet_closest<vfloat, false>(tris, begin, end, q, lanes, tmax, initial, hits);
+      } else {
+        for (unsigned m = lanes; m != 0; m &= m - 1) {
+          const int k = __builtin_ctz(m);
+          kernels.closest(tris, begin, end, rays[k], hits[k]);
+          if (hits[k].t < tmax[k]) tmax[k] = hits[k].t;
+        }
+      }
+      boxes.set_tmax(tmax);
+    }
+    // pop, dropping entries that every one of their lanes has a nearer hit than
+    for (;;) {
+      if (sp == 0) return;
+      --sp;
+      if (stack[sp].t <= boxes.max_tmax(stack[sp].lanes)) break;
+    }
+    ref = stack[sp].ref;
+    lanes = stack[sp].lanes;
+  }
 }
 
 // rays[0..P) with lanes `active`, the other lanes' rays not read: hits[k] of each active lane
@@ -72,13 +185,14 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
   const vfloat tmin0 = vfloat::load(soa[6]);
   const unsigned tmin_zero = bits((tmin0 >= zero) & (tmin0 <= zero));
   const float* const rows[8] = {soa[0], soa[1], soa[2], rd[0], rd[1], rd[2], soa[6], soa[7]};
-  PK pk = PK::load(rows);
   float* tmax = soa[7];
 
   // Camera packets often miss the whole mesh (the background): the root's box (the union of its
   // children's) first, one test instead of N, dropping the lanes that miss it.
+  float root_lo[3], root_hi[3];
   {
-    float lo[3], hi[3];
+    float* const lo = root_lo;
+    float* const hi = root_hi;
     for (int a = 0; a < 3; ++a) {
       lo[a] = nodes[0].bounds[a][0];
       hi[a] = nodes[0].bounds[a + 3][0];
@@ -109,73 +223,43 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
                                 dx, dy, dz, vfloat::load(soa[6])},
                                vfloat::load(lo)};
 
-  PacketItem local[kLocalStack];
-  PacketItem* stack = bvh.stack_size <= kLocalStack
-                          ? local
-                          : static_cast<PacketItem*>(__builtin_alloca(bvh.stack_size * sizeof(PacketItem)));
-  uint32_t sp = 0;
-  uint32_t ref = 0;
-  unsigned lanes = active;
-  for (;;) {
-    if (__builtin_popcount(lanes) <= kSingleRayLanes) {  // diverged: finish ray by ray
-      for (unsigned m = lanes; m != 0; m &= m - 1) {
-        const int k = __builtin_ctz(m);
-        bvh_closest_from<B>(bvh, tris, kernels, rays[k], hits[k], ref);
-        if (hits[k].t < tmax[k]) {
-          tmax[k] = hits[k].t;
-          initial[k] = next_up(tmax[k]);
-        }
-      }
-      pk.set_tmax(tmax);
-    } else if (!(ref & kLeafFlag)) {
-      const WideNode<N>& node = nodes[ref];
-      uint32_t refs[N], masks[N];
-      float ts[N];
-      int count = 0;
-      alignas(64) float tn[P];
-      for (int c = 0; c < N && node.ref[c] != kEmptyRef; ++c) {
-        const unsigned m = pk.template hits<N>(node.bounds, c, lanes, bvh.box_epsilon, tn);
-        if (m == 0) continue;
-        const float d = PK::min_lanes(tn, m);
-        int j = count++;
-        while (j > 0 && ts[j - 1] < d) {  // descending: farthest first
-          refs[j] = refs[j - 1];
-          masks[j] = masks[j - 1];
-          ts[j] = ts[j - 1];
-          --j;
-        }
-        refs[j] = node.ref[c];
-        masks[j] = m;
-        ts[j] = d;
-      }
-      if (count > 0) {
-        for (int j = 0; j < count - 1; ++j) stack[sp++] = PacketItem{refs[j], masks[j], ts[j]};
-        ref = refs[count - 1];
-        lanes = masks[count - 1];
-        continue;
-      }
-    } else if (ref != kEmptyRef) {
-      const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
-      if (leaf_mode == 1) {
-        mt_packet_closest<vfloat, true>(tris, begin, end, q, lanes, tmax, initial, hits);
-      } else if (leaf_mode == 2) {
-        mt_packet_closest<vfloat, false>(tris, begin, end, q, lanes, tmax, initial, hits);
-      } else {
-        for (unsigned m = lanes; m != 0; m &= m - 1) {
-          const int k = __builtin_ctz(m);
-          kernels.closest(tris, begin, end, rays[k], hits[k]);
-          if (hits[k].t < tmax[k]) tmax[k] = hits[k].t;
-        }
-      }
-      pk.set_tmax(tmax);
+  const PacketRun run{tmax, initial, leaf_mode, q};
+  // The forward test (PK::Forward) when every lane has tmin >= 0 and no slab product can overflow:
+  // |1/d| · max(|o|, |root box|) <= 2^120 on every axis of every lane (so also no infinite 1/d of a
+  // zero direction component, whose 0·inf the FMA form could not skip), and eps >= 2^-20.
+  //
+  // Why it never drops a box the general test keeps (u = 2^-24): r = fl(1/d) = (1/d)(1 + δ0) and
+  // r' = fl(r·(1 − eps)) = r(1 − eps)(1 + δ1); k >= o·r' exactly (PK::Forward::outward moves the
+  // rounded product up by more than its error). The FMA rounds once: t' = fl(b·r' − k) with
+  // b·r' − k <= (b − o)·r'. If the exact entry (b − o)/d > 0, t' <= (b − o)/d · (1 − eps)(1 + u)^3,
+  // below it by more than 0.9·eps·|t| as in the general and single-ray tests; if it is <= 0, so
+  // is t', and tmin >= 0 decides in both. The exit mirrors this with r·(1 + eps) and k rounded
+  // down: above the exact exit by more than 0.9·eps·|t| when it is > 0; an exact exit < 0 misses
+  // in both (tmin >= 0), and an exit of exactly 0 gives t' >= 0. Without the outward rounding the
+  // error of o·r' (u·|o·r'|, not relative to t) loses boxes far from the coordinate origin
+  // (tests/bvh/bvh_packet_box_test.cpp). Same-process A/B, 1 thread (packet_bench): +5-7 % on the
+  // 4k and 1M spheres' primary packets, of which the uniform-sign case gives 1.5-2.5 points.
+  const vfloat big = vfloat::broadcast(0x1p120f);
+  vfloat m = vmax(vmax(abs(vfloat::load(soa[0])), abs(vfloat::load(soa[1]))), abs(vfloat::load(soa[2])));
+  for (int a = 0; a < 3; ++a) m = vmax(m, vfloat::broadcast(vmax_abs(root_lo[a], root_hi[a])));
+  const vfloat r = vmax(vmax(abs(vfloat::load(rd[0])), abs(vfloat::load(rd[1]))), abs(vfloat::load(rd[2])));
+  if (bvh.box_epsilon >= 0x1p-20f && (bits(tmin0 >= zero) & active) == active &&
+      (bits(r * m <= big) & active) == active) {
+    unsigned neg[3];  // lanes with a negative direction component; uniform: none or all
+    bool uniform = true;
+    for (int a = 0; a < 3; ++a) {
+      neg[a] = bits(vfloat::load(rd[a]) < zero) & active;
+      uniform = uniform && (neg[a] == 0 || neg[a] == active);
     }
-    // pop, dropping entries that every one of their lanes has a nearer hit than
-    for (;;) {
-      if (sp == 0) return;
-      --sp;
-      if (stack[sp].t <= pk.max_tmax(stack[sp].lanes)) break;
+    if (uniform) {
+      bvh_packet_traverse<B, PK>(bvh, tris, kernels, rays, hits, active,
+                                 PK::template Forward<true>::load(rows, neg, bvh.box_epsilon), run);
+    } else {
+      bvh_packet_traverse<B, PK>(bvh, tris, kernels, rays, hits, active,
+                                 PK::template Forward<false>::load(rows, neg, bvh.box_epsilon), run);
     }
-    ref = stack[sp].ref;
-    lanes = stack[sp].lanes;
+    return;
   }
+  bvh_packet_traverse<B, PK>(bvh, tris, kernels, rays, hits, active,
+                             PacketBoxes<PK>{PK::load(rows), bvh.box_epsilon}, run);
 }

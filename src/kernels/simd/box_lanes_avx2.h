@@ -95,8 +95,13 @@ struct BoxLanes8 {
 // A packet of 8 rays, one per lane, for packet traversal (bvh/bvh_packet.inl): the same slab
 // arithmetic as BoxLanes8, transposed — one child box against every lane. Each lane picks
 // its near plane by the sign of its own direction, so a lane's answer equals the single-ray test's.
+template <bool Uniform>
+struct PacketLanes8Forward;
+
 struct PacketLanes8 {
   static constexpr int P = 8;
+  template <bool Uniform>
+  using Forward = PacketLanes8Forward<Uniform>;
   __m256 ox, oy, oz, rx, ry, rz, tmin, tmax;
   
 
@@ -186,6 +191,78 @@ struct PacketLanes8 {
     const __m256 hi = _mm256_min_ps(tmax, tf);
     _mm256_storeu_ps(tn_out, lo);
     return (unsigned(_mm256_movemask_ps(_mm256_cmp_ps(lo, hi, _CMP_LE_OQ)))) & active;
+  }
+};
+
+// PacketLanes8's test for a packet with every tmin >= 0 whose slabs cannot overflow: each slab in
+// one FMA, b·r' − k (see PacketLanes16Forward in box_lanes_avx512.h; the guard and the robustness
+// argument are in bvh/bvh_packet.inl). Uniform: the same near and far bounds rows for every lane.
+template <bool Uniform>
+struct PacketLanes8Forward {
+  __m256 nrx, nry, nrz, frx, fry, frz, knx, kny, knz, kfx, kfy, kfz, tmin, tmax;
+  __m256 sx, sy, sz;           // all-ones in the lanes whose direction is negative
+  int nx, ny, nz, fx, fy, fz;  // Uniform: the bounds rows of the near and far planes
+
+  // From SoA arrays of P floats: o[0..2], rdir[0..2], tmin, tmax; neg[a]: the lanes with
+  // rdir[a] < 0 (Uniform: none or all of the active lanes).
+  static RAYVEC_INLINE PacketLanes8Forward load(const float* const soa[8], const unsigned neg[3],
+                                                float eps) {
+    PacketLanes8Forward k;
+    const __m256 dn = _mm256_set1_ps(1.0f - eps), up = _mm256_set1_ps(1.0f + eps);
+    __m256* const nr[3] = {&k.nrx, &k.nry, &k.nrz};
+    __m256* const fr[3] = {&k.frx, &k.fry, &k.frz};
+    __m256* const kn[3] = {&k.knx, &k.kny, &k.knz};
+    __m256* const kf[3] = {&k.kfx, &k.kfy, &k.kfz};
+    for (int a = 0; a < 3; ++a) {
+      const __m256 o = _mm256_loadu_ps(soa[a]), r = _mm256_loadu_ps(soa[3 + a]);
+      *nr[a] = _mm256_mul_ps(r, dn);
+      *fr[a] = _mm256_mul_ps(r, up);
+      *kn[a] = outward(_mm256_mul_ps(o, *nr[a]), _mm256_set1_ps(1.0f));
+      *kf[a] = outward(_mm256_mul_ps(o, *fr[a]), _mm256_set1_ps(-1.0f));
+    }
+    k.tmin = _mm256_loadu_ps(soa[6]);
+    k.tmax = _mm256_loadu_ps(soa[7]);
+    k.sx = PacketLanes8::lane_mask(neg[0]);
+    k.sy = PacketLanes8::lane_mask(neg[1]);
+    k.sz = PacketLanes8::lane_mask(neg[2]);
+    k.nx = neg[0] ? 3 : 0; k.ny = neg[1] ? 4 : 1; k.nz = neg[2] ? 5 : 2;
+    k.fx = neg[0] ? 0 : 3; k.fy = neg[1] ? 1 : 4; k.fz = neg[2] ? 2 : 5;
+    return k;
+  }
+  // p moved toward `dir` (+1 up, −1 down) by more than its rounding error (see PacketLanes16Forward).
+  static RAYVEC_INLINE __m256 outward(__m256 p, __m256 dir) {
+    const __m256 a = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), p);
+    const __m256 step = _mm256_max_ps(_mm256_mul_ps(a, _mm256_set1_ps(0x1p-22f)), _mm256_set1_ps(0x1p-149f));
+    return _mm256_fmadd_ps(step, dir, p);
+  }
+  RAYVEC_INLINE void set_tmax(const float* t) { tmax = _mm256_loadu_ps(t); }
+  RAYVEC_INLINE float max_tmax(unsigned lanes) const {
+    const __m256 neg = _mm256_xor_ps(tmax, _mm256_set1_ps(-0.0f));
+    return -PacketLanes8::hmin(
+        _mm256_blendv_ps(_mm256_set1_ps(__builtin_inff()), neg, PacketLanes8::lane_mask(lanes)));
+  }
+
+  // As PacketLanes8::hits.
+  template <int N>
+  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float* tn_out) const {
+    __m256 bnx, bny, bnz, bfx, bfy, bfz;
+    if constexpr (Uniform) {
+      bnx = _mm256_set1_ps(b[nx][k]); bny = _mm256_set1_ps(b[ny][k]); bnz = _mm256_set1_ps(b[nz][k]);
+      bfx = _mm256_set1_ps(b[fx][k]); bfy = _mm256_set1_ps(b[fy][k]); bfz = _mm256_set1_ps(b[fz][k]);
+    } else {
+      const __m256 lx = _mm256_set1_ps(b[0][k]), ly = _mm256_set1_ps(b[1][k]), lz = _mm256_set1_ps(b[2][k]);
+      const __m256 hx = _mm256_set1_ps(b[3][k]), hy = _mm256_set1_ps(b[4][k]), hz = _mm256_set1_ps(b[5][k]);
+      bnx = _mm256_blendv_ps(lx, hx, sx); bny = _mm256_blendv_ps(ly, hy, sy); bnz = _mm256_blendv_ps(lz, hz, sz);
+      bfx = _mm256_blendv_ps(hx, lx, sx); bfy = _mm256_blendv_ps(hy, ly, sy); bfz = _mm256_blendv_ps(hz, lz, sz);
+    }
+    const __m256 tnx = _mm256_fmsub_ps(bnx, nrx, knx), tny = _mm256_fmsub_ps(bny, nry, kny);
+    const __m256 tnz = _mm256_fmsub_ps(bnz, nrz, knz);
+    const __m256 tfx = _mm256_fmsub_ps(bfx, frx, kfx), tfy = _mm256_fmsub_ps(bfy, fry, kfy);
+    const __m256 tfz = _mm256_fmsub_ps(bfz, frz, kfz);
+    const __m256 lo = _mm256_max_ps(_mm256_max_ps(tnx, tmin), _mm256_max_ps(tny, tnz));
+    const __m256 hi = _mm256_min_ps(_mm256_min_ps(tfx, tmax), _mm256_min_ps(tfy, tfz));
+    _mm256_storeu_ps(tn_out, lo);
+    return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(lo, hi, _CMP_LE_OQ))) & active;
   }
 };
 
