@@ -70,6 +70,25 @@ RAYVEC_INLINE float vmax_abs(float a, float b) {
   return a > b ? a : b;
 }
 
+// The memory a stack entry will read when popped: its node, or its leaf's triangle rows (the
+// rows mt_packet_closest reads). Issued on push, so the loads overlap the nearer children's work;
+// same-process A/B, 1 thread: +1.6-3 % on the 1M sphere's primary packets, neutral on the 4k one.
+template <int N>
+RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& t, uint32_t ref) {
+  if (!(ref & kLeafFlag)) {
+    const char* p = reinterpret_cast<const char*>(nodes + ref);
+    for (std::size_t j = 0; j < sizeof(WideNode<N>); j += 64) __builtin_prefetch(p + j);
+  } else if (ref != kEmptyRef) {
+    const float* const rows[12] = {t.v0x, t.v0y, t.v0z, t.e1x, t.e1y, t.e1z,
+                                   t.e2x, t.e2y, t.e2z, t.ngx, t.ngy, t.ngz};
+    const uint32_t b = leaf_begin(ref), e = leaf_end(ref);
+    for (const float* r : rows) {
+      __builtin_prefetch(r + b);
+      if (e - b > 16) __builtin_prefetch(r + b + 16);
+    }
+  }
+}
+
 // The traversal proper, from the root with the lanes `lanes`, box tests by `boxes` (PacketBoxes
 // or PK::Forward); the state set up by bvh_closest_packet.
 template <class B, class PK, class Boxes>
@@ -121,7 +140,10 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
         ts[j] = d;
       }
       if (count > 0) {
-        for (int j = 0; j < count - 1; ++j) stack[sp++] = PacketItem{refs[j], masks[j], ts[j]};
+        for (int j = 0; j < count - 1; ++j) {
+          stack[sp++] = PacketItem{refs[j], masks[j], ts[j]};
+          prefetch_ref<N>(nodes, tris, refs[j]);
+        }
         ref = refs[count - 1];
         lanes = masks[count - 1];
         continue;
