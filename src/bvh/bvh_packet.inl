@@ -215,14 +215,7 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
   {
     float* const lo = root_lo;
     float* const hi = root_hi;
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = nodes[0].bounds[a][0];
-      hi[a] = nodes[0].bounds[a + 3][0];
-      for (int c = 1; c < N; ++c) {
-        lo[a] = nodes[0].bounds[a][c] < lo[a] ? nodes[0].bounds[a][c] : lo[a];
-        hi[a] = nodes[0].bounds[a + 3][c] > hi[a] ? nodes[0].bounds[a + 3][c] : hi[a];
-      }
-    }
+    PK::template union_box<N>(nodes[0].bounds, lo, hi);
     const vfloat o[3] = {vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2])};
     const vfloat r[3] = {vfloat::load(rd[0]), vfloat::load(rd[1]), vfloat::load(rd[2])};
     active = packet_box_lanes(lo, hi, o, r, vfloat::load(soa[6]), vfloat::load(soa[7]),

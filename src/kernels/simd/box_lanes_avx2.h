@@ -144,6 +144,17 @@ struct PacketLanes8 {
       bad = _mm256_or_ps(bad, _mm256_cmp_ps(_mm256_andnot_ps(sign, _mm256_load_ps(rows[f])), inf, _CMP_NLT_UQ));
     return lanes & ~unsigned(_mm256_movemask_ps(bad));
   }
+  // The union of the N <= 8 child boxes of a node (bounds rows b[0..5]).
+  template <int N>
+  static RAYVEC_INLINE void union_box(const float (*b)[N], float lo[3], float hi[3]) {
+    static_assert(N <= 8, "one ymm per bounds row");
+    const __m256 keep = lane_mask((1u << N) - 1u), inf = _mm256_set1_ps(__builtin_inff());
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    for (int a = 0; a < 3; ++a) {  // rows of N < 8 floats are padded by the next row: masked off
+      lo[a] = hmin(_mm256_blendv_ps(inf, _mm256_loadu_ps(b[a]), keep));
+      hi[a] = -hmin(_mm256_blendv_ps(inf, _mm256_xor_ps(_mm256_loadu_ps(b[a + 3]), sign), keep));
+    }
+  }
   RAYVEC_INLINE void set_tmax(const float* t) { tmax = _mm256_loadu_ps(t); }
   // The smallest of tn over `lanes` (nonzero), and the largest current tmax over `lanes`.
   static RAYVEC_INLINE __m256 lane_mask(unsigned lanes) {

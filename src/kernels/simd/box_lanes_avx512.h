@@ -240,6 +240,15 @@ struct PacketLanes16 {
     bad |= _mm512_fpclass_ps_mask(_mm512_load_ps(rows[7]), 0x81);
     return lanes & ~bad;
   }
+  // The union of the N <= 16 child boxes of a node (bounds rows b[0..5]).
+  template <int N>
+  static RAYVEC_INLINE void union_box(const float (*b)[N], float lo[3], float hi[3]) {
+    const __mmask16 m = __mmask16((1u << N) - 1u);
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = _mm512_mask_reduce_min_ps(m, _mm512_maskz_loadu_ps(m, b[a]));
+      hi[a] = _mm512_mask_reduce_max_ps(m, _mm512_maskz_loadu_ps(m, b[a + 3]));
+    }
+  }
   RAYVEC_INLINE void set_tmax(const float* t) { tmax = _mm512_loadu_ps(t); }
   // The smallest of tn over `lanes` (nonzero), and the largest current tmax over `lanes`.
   static RAYVEC_INLINE float min_lanes(const float* tn, unsigned lanes) {
