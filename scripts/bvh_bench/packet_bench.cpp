@@ -7,11 +7,13 @@
 // ratio to "tree" and to Embree, and the range of the per-round ratios to Embree; checks every
 // variant's hits (id and bit-identical t) against "tree".
 // The packet functions overwrite the hits of their lanes (BvhKernels::closest_packet), so no reset
-// is timed with them.
+// is timed with them; variants named old* (a copy of an older bvh_packet.inl) get the older
+// contract's caller work instead, as Bvh::closest_stream did it: hits reset, untraceable lanes out.
 //   packet_bench MODEL.obj [ROUNDS]      RV_SIDE=N: N×N rays instead of 1024×1024
 #include <time.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -98,8 +100,21 @@ int main(int argc, char** argv) {
         embree->closest_packet(tiles.rays.data() + s, hits.data() + s, n);
         continue;
       }
+      unsigned lanes = (1u << n) - 1u;
+      if (r.name.rfind("old", 0) == 0) {  // the contract before 1fc0de1: the caller resets and filters
+        lanes = 0;
+        for (uint32_t i = 0; i < n; ++i) {
+          hits[s + i] = Hit{};
+          const Ray& q = tiles.rays[s + i];
+          const bool ok = std::isfinite(q.org.x) && std::isfinite(q.org.y) && std::isfinite(q.org.z) &&
+                          std::isfinite(q.dir.x) && std::isfinite(q.dir.y) && std::isfinite(q.dir.z) &&
+                          !std::isnan(q.tmin) && !std::isnan(q.tmax);
+          lanes |= unsigned(ok) << i;
+        }
+        if (lanes == 0) continue;
+      }
       r.fn(bvh.tree().arrays(), bvh.triangles().arrays(), kernels, tiles.rays.data() + s, hits.data() + s,
-           (1u << n) - 1u);
+           lanes);
     }
     return cpu_now() - t0;
   };
