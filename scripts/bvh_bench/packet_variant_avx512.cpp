@@ -8,6 +8,7 @@
 #include "kernels/kernel_table.h"
 #include "kernels/simd/vfloat_avx512.h"
 #include "kernels/simd/box_lanes_avx512.h"
+#include "kernels/simd/packet_lanes_avx512.h"
 
 #ifndef RV_PACKET_INL
 #define RV_PACKET_INL "bvh/bvh_packet.inl"

@@ -6,6 +6,7 @@
 #include "kernels/kernel_table.h"
 #include "kernels/simd/vfloat_avx2.h"
 #include "kernels/simd/box_lanes_avx2.h"
+#include "kernels/simd/packet_lanes_avx2.h"
 
 namespace rayvec::avx2 {
 

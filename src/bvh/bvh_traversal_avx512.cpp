@@ -6,6 +6,7 @@
 #include "kernels/kernel_table.h"
 #include "kernels/simd/vfloat_avx512.h"
 #include "kernels/simd/box_lanes_avx512.h"
+#include "kernels/simd/packet_lanes_avx512.h"
 
 namespace rayvec::avx512 {
 
