@@ -13,6 +13,7 @@ out=${OUT:-$build/packet_bench}
 mkdir -p "$out"
 isa="-mavx2 -mfma -mbmi -mbmi2 -mlzcnt -mf16c -mpopcnt -mavx512f -mavx512dq -mavx512bw -mavx512vl -mavx512cd -ffp-contract=off -Wno-maybe-uninitialized"
 objs=""
+pids=""
 i=0
 for spec in "$@"; do
   name=${spec%%=*}
@@ -23,11 +24,12 @@ for spec in "$@"; do
   [ "$inl" = tree ] && inl="$src/bvh/bvh_packet.inl"
   g++ -std=c++20 -O3 $isa -I"$src" -DRV_PACKET_INL="\"$inl\"" -DRV_VARIANT_NAME="\"$name\"" \
       -DRV_VARIANT_NS=v$i $flags $RV_CXXFLAGS -c "$here/packet_variant_avx512.cpp" -o "$out/v$i.o" &
+  pids="$pids $!"
   objs="$objs $out/v$i.o"
   i=$((i + 1))
-  [ $((i % 2)) -eq 0 ] && wait
+  if [ $((i % 2)) -eq 0 ]; then for p in $pids; do wait $p; done; pids=""; fi
 done
-wait
+for p in $pids; do wait $p; done  # set -e: a failed compile stops the build
 g++ -std=c++20 -O2 -I"$src" "$here/packet_bench.cpp" $objs "$build/librayvec.a" -ltinyobjloader -lOpenImageIO \
     -lOpenImageIO_Util -lembree3 -lgmpxx -lgmp -fopenmp -o "$out/packet_bench"
 echo "built $out/packet_bench"

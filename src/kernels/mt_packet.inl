@@ -12,9 +12,9 @@
 // triangle comes broadcast instead of loaded; the brute-force kernel's conservative one-mask sign
 // pre-test skips the steps no lane can pass: +1.4-2.7 % on the spheres' primary packets,
 // scripts/bvh_bench/packet_bench), then the same exact stage t = tn/|det| with tmin <= t < best,
-// and u = (0 − un)/|det|, v = vn/|det| for the winner. Slots are visited in increasing order with a strict `<`, so of equal
-// t the lowest slot, hence the lowest id (ids increase inside a range), wins, as in the single-ray
-// lane reduction; the comparison with the lane's previous hit (earlier leaves) is mt_finish's.
+// and u = (0 − un)/|det|, v = vn/|det| for the winner. Slots are visited in increasing order with
+// a strict `<`, so of equal t the lowest slot, hence the lowest id (ids increase inside a range),
+// wins, as in the single-ray lane reduction; the comparison with the lane's previous hit (earlier leaves) is mt_finish's.
 // The upper pre-test threshold is per lane here (its own best·(1 + 2^-20)) where the single-ray
 // kernel shares the nearest of its lanes; both are conservative (every triangle that can be nearer
 // passes), so the exact stage alone decides — outside subnormal |det|, where no pre-test product
@@ -56,19 +56,16 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   V un = zero, vn = zero, adet = zero, slot = zero;
   unsigned found = 0;
   const V neg_lo = zero - q.lo;
-  for (uint32_t i = begin; i < end; ++i) {
-    MtNumerators<V> c = mt_numerator_values<V>(T, MtTriangleBroadcast<V>{i}, q.r);
-    // most steps hit no lane: the brute-force kernel's one-mask sign pre-test first (conservative,
-    // see mt_sign_pretest), the ordered tests of mt_numerators_core only on steps it passes
-    if (!any(mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi))) continue;
+  // the exact tests and the update of one step that passed the pre-test
+  auto step = [&](MtNumerators<V> c, uint32_t i) __attribute__((always_inline)) {
     c.mask = active & mt_edges(c) & (c.tn < hi * c.adet);
     if constexpr (TminZero) c.mask = c.mask & (c.tn >= zero);
     else c.mask = c.mask & (c.tn >= q.lo * c.adet);
-    if (!any(c.mask)) continue;
+    if (!any(c.mask)) return;
     // the exact depth test of mt_closest_step, per lane
     const V t = c.tn / c.adet;
     const typename V::Mask m = c.mask & (t >= q.r.tmin) & (t < best_t);
-    if (!any(m)) continue;
+    if (!any(m)) return;
     best_t = select(m, best_t, t);
     un = select(m, un, c.un);
     vn = select(m, vn, c.vn);
@@ -76,6 +73,22 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
     slot = select(m, slot, V::broadcast(__builtin_bit_cast(float, i)));  // the slot's bits
     hi = best_t * widen;
     found |= bits(m);
+  };
+  // Two triangles per iteration, one branch on both pre-tests (+1.6-3.3 % on the 4k sphere,
+  // +0.5-0.8 % on the 1M sphere); the steps that pass are still taken in slot order.
+  uint32_t i = begin;
+  for (; i + 1 < end; i += 2) {
+    const MtNumerators<V> c0 = mt_numerator_values<V>(T, MtTriangleBroadcast<V>{i}, q.r);
+    const MtNumerators<V> c1 = mt_numerator_values<V>(T, MtTriangleBroadcast<V>{i + 1}, q.r);
+    const unsigned p0 = bits(mt_sign_pretest<V, TminZero>(c0, active, neg_lo, hi));
+    const unsigned p1 = bits(mt_sign_pretest<V, TminZero>(c1, active, neg_lo, hi));
+    if ((p0 | p1) == 0) continue;
+    if (p0) step(c0, i);
+    if (p1) step(c1, i + 1);  // its pre-test used the older, larger hi: still conservative
+  }
+  if (i < end) {
+    const MtNumerators<V> c = mt_numerator_values<V>(T, MtTriangleBroadcast<V>{i}, q.r);
+    if (any(mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi))) step(c, i);
   }
   if (found == 0) return 0;
   // u and v divided once, as mt_finish does (0 − un: no −0)

@@ -61,7 +61,8 @@ struct PacketLanes8 {
     __m256 bad = _mm256_cmp_ps(_mm256_load_ps(rows[6]), _mm256_load_ps(rows[6]), _CMP_UNORD_Q);
     bad = _mm256_or_ps(bad, _mm256_cmp_ps(_mm256_load_ps(rows[7]), _mm256_load_ps(rows[7]), _CMP_UNORD_Q));
     for (int f = 0; f < 6; ++f)  // not |x| < inf: NaN or infinite
-      bad = _mm256_or_ps(bad, _mm256_cmp_ps(_mm256_andnot_ps(sign, _mm256_load_ps(rows[f])), inf, _CMP_NLT_UQ));
+      bad = _mm256_or_ps(bad,
+                         _mm256_cmp_ps(_mm256_andnot_ps(sign, _mm256_load_ps(rows[f])), inf, _CMP_NLT_UQ));
     return lanes & ~unsigned(_mm256_movemask_ps(bad));
   }
   // The union of the N <= 8 child boxes of a node (bounds rows b[0..5]).
@@ -183,8 +184,10 @@ struct PacketLanes8Forward {
     } else {
       const __m256 lx = _mm256_set1_ps(b[0][k]), ly = _mm256_set1_ps(b[1][k]), lz = _mm256_set1_ps(b[2][k]);
       const __m256 hx = _mm256_set1_ps(b[3][k]), hy = _mm256_set1_ps(b[4][k]), hz = _mm256_set1_ps(b[5][k]);
-      bnx = _mm256_blendv_ps(lx, hx, sx); bny = _mm256_blendv_ps(ly, hy, sy); bnz = _mm256_blendv_ps(lz, hz, sz);
-      bfx = _mm256_blendv_ps(hx, lx, sx); bfy = _mm256_blendv_ps(hy, ly, sy); bfz = _mm256_blendv_ps(hz, lz, sz);
+      bnx = _mm256_blendv_ps(lx, hx, sx); bny = _mm256_blendv_ps(ly, hy, sy);
+      bnz = _mm256_blendv_ps(lz, hz, sz);
+      bfx = _mm256_blendv_ps(hx, lx, sx); bfy = _mm256_blendv_ps(hy, ly, sy);
+      bfz = _mm256_blendv_ps(hz, lz, sz);
     }
     const __m256 tnx = _mm256_fmsub_ps(bnx, nrx, knx), tny = _mm256_fmsub_ps(bny, nry, kny);
     const __m256 tnz = _mm256_fmsub_ps(bnz, nrz, knz);
