@@ -18,6 +18,7 @@
 #include "accel/brute_force.h"
 #include "accel/bvh.h"
 #include "bvh_cases.h"
+#include "bvh_stream_check.h"
 #include "bvh_scenes.h"
 
 namespace rayvec {
@@ -31,20 +32,7 @@ class BvhPacketBox : public test::BvhCaseTest {
     options.width = GetParam().width;
     const Bvh bvh(mesh, config(), options);
     const BruteForce brute(mesh, config());
-    std::vector<Hit> stream(rays.size());
-    bvh.closest_stream(rays.data(), stream.data(), rays.size());
-    int hits = 0;
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-      for (const Hit& want : {bvh.closest(rays[i]), brute.closest(rays[i])}) {
-        EXPECT_EQ(want.tri, stream[i].tri) << "ray " << i;
-        EXPECT_EQ(std::bit_cast<uint32_t>(want.t), std::bit_cast<uint32_t>(stream[i].t)) << "ray " << i;
-        EXPECT_EQ(std::bit_cast<uint32_t>(want.u), std::bit_cast<uint32_t>(stream[i].u)) << "ray " << i;
-        EXPECT_EQ(std::bit_cast<uint32_t>(want.v), std::bit_cast<uint32_t>(stream[i].v)) << "ray " << i;
-        if (testing::Test::HasFailure()) return hits;
-      }
-      hits += stream[i].hit();
-    }
-    return hits;
+    return test::expect_stream_exact(bvh, brute, rays);
   }
 };
 

@@ -17,14 +17,13 @@
 #include "accel/bvh.h"
 #include "bvh/bvh_kernels.h"
 #include "bvh_cases.h"
+#include "bvh_stream_check.h"
 #include "bvh_scenes.h"
 
 namespace rayvec {
 namespace {
 
 using Case = test::BvhCase;
-
-uint32_t bits(float x) { return std::bit_cast<uint32_t>(x); }
 
 // A pinhole camera at `eye` looking down −z, w×h pixels (multiples of 4) as 4×4 tiles: consecutive
 // groups of 16 rays (two 8-ray AVX2 packets per tile), all from one origin.
@@ -54,20 +53,7 @@ class BvhPacket : public test::BvhCaseTest {
     options.width = GetParam().width;
     const Bvh bvh(mesh, config(), options);
     const BruteForce brute(mesh, config());
-    std::vector<Hit> stream(rays.size());
-    bvh.closest_stream(rays.data(), stream.data(), rays.size());
-    int hits = 0;
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-      for (const Hit& want : {bvh.closest(rays[i]), brute.closest(rays[i])}) {
-        EXPECT_EQ(want.tri, stream[i].tri) << "ray " << i;
-        EXPECT_EQ(bits(want.t), bits(stream[i].t)) << "ray " << i << ": " << want.t << " vs " << stream[i].t;
-        EXPECT_EQ(bits(want.u), bits(stream[i].u)) << "ray " << i;
-        EXPECT_EQ(bits(want.v), bits(stream[i].v)) << "ray " << i;
-        if (testing::Test::HasFailure()) return hits;
-      }
-      hits += stream[i].hit();
-    }
-    return hits;
+    return test::expect_stream_exact(bvh, brute, rays);
   }
 };
 
