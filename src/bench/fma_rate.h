@@ -18,6 +18,9 @@ namespace rayvec {
 // per cycle. 0 if the ISA is not supported by this CPU.
 double measure_fma_per_ns(Isa isa);
 
+namespace scalar {
+double fma_per_ns();  // a·m + c as a multiply and an add (no FMA in baseline x86-64)
+}
 namespace avx2 {
 double fma_per_ns();
 }

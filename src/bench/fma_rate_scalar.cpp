@@ -1,0 +1,12 @@
+// fma_per_ns() for scalar (baseline flags: a·m + c is a multiply and an add); the body is fma_rate.inl.
+#include <algorithm>
+
+#include "bench/cpu_clock.h"
+#include "bench/fma_rate.h"
+#include "kernels/simd/vfloat_scalar.h"
+
+namespace rayvec::scalar {
+
+#include "bench/fma_rate.inl"
+
+}  // namespace rayvec::scalar
