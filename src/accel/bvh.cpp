@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bvh/leaf_alignment.h"
+
 namespace rayvec {
 namespace {
 
@@ -26,7 +28,8 @@ Bvh::Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& 
     sah.leaf_block = uint32_t(kernels_->width);
     sah.max_leaf = std::min(2 * sah.leaf_block, kMaxLeafTriangles);
   }
-  const BinaryBvh binary = build_binned_sah(mesh, sah);
+  BinaryBvh binary = build_binned_sah(mesh, sah);
+  align_leaves(binary, uint32_t(kernels_->width));
   tree_ = WideBvh(binary, traversal_->width);
   tree_.set_box_epsilon(options.box_epsilon);
   tris_ = TriangleSoA(mesh, binary.order);

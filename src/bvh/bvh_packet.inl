@@ -80,12 +80,11 @@ RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& 
     const char* p = reinterpret_cast<const char*>(nodes + ref);
     for (std::size_t j = 0; j < sizeof(WideNode<N>); j += 64) __builtin_prefetch(p + j);
   } else if (ref != kEmptyRef) {
-    const float* const rows[12] = {t.v0x, t.v0y, t.v0z, t.e1x, t.e1y, t.e1z,
-                                   t.e2x, t.e2y, t.e2z, t.ngx, t.ngy, t.ngz};
-    const uint32_t b = leaf_begin(ref), e = leaf_end(ref);
-    for (const float* r : rows) {
-      __builtin_prefetch(r + b);
-      if (e - b > 16) __builtin_prefetch(r + b + 16);
+    // the hot rows of each block the leaf touches: kMtRows contiguous lines (triangle_soa.h)
+    const uint32_t last = (leaf_end(ref) - 1) / kSlotBlock;
+    for (uint32_t b = leaf_begin(ref) / kSlotBlock; b <= last; ++b) {
+      const char* p = reinterpret_cast<const char*>(t.v0x + std::size_t(b) * kSlotBlockFloats);
+      for (uint32_t j = 0; j < kMtRows; ++j) __builtin_prefetch(p + 64 * j);
     }
   }
 }

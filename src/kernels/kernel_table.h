@@ -23,6 +23,10 @@ struct TriangleKernels {
   Intersector intersector;
   int width;  // triangles per SIMD step (16 AVX-512, 8 AVX2, 1 scalar; halved for double)
 
+  // Any begin and end <= count are allowed; steps load whole blocks of W slots at multiples of W
+  // (blocked rows, triangle_soa.h) and mask the lanes outside [begin, end), so a range starting on
+  // a multiple of W (as BVH leaves do) saves the masked head step.
+
   // Closest hit of `ray` among slots [begin, end): replaces `hit` when a triangle is hit with
   // tmin <= t <= min(tmax, hit.t) and it is nearer than `hit` (equal t: lower id wins). `hit` must be
   // a miss or a previous result for the same ray.

@@ -51,6 +51,15 @@ RAYVEC_INLINE double next_up(double x) {
   return __builtin_bit_cast(double, b);
 }
 
+// Blocked rows (triangle_soa.h): a step loads W lanes from a slot that is a multiple of W, so the
+// steps of [begin, end) start at begin rounded down, and step_lanes masks the lanes outside the
+// range (those below begin only in that first step).
+RAYVEC_INLINE uint32_t first_step(uint32_t begin, uint32_t W) { return begin - begin % W; }
+template <class V>
+RAYVEC_INLINE typename V::Mask step_lanes(uint32_t i, uint32_t begin, uint32_t end) {
+  return i >= begin ? first_lanes(V{}, end - i) : lanes_between(V{}, begin - i, end - i);
+}
+
 // The lanes of one step that hit, with their t, u, v.
 template <class V>
 struct LaneHits {
@@ -64,8 +73,8 @@ template <class V>
 RAYVEC_INLINE LaneHits<V> test_paper(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
                                      typename V::Mask active, V tlimit) {
   LaneHits<V> out;
-  const V e1x = V::load(T.e1x + i), e1y = V::load(T.e1y + i), e1z = V::load(T.e1z + i);
-  const V e2x = V::load(T.e2x + i), e2y = V::load(T.e2y + i), e2z = V::load(T.e2z + i);
+  const V e1x = V::load(T.e1x + slot_offset(i)), e1y = V::load(T.e1y + slot_offset(i)), e1z = V::load(T.e1z + slot_offset(i));
+  const V e2x = V::load(T.e2x + slot_offset(i)), e2y = V::load(T.e2y + slot_offset(i)), e2z = V::load(T.e2z + slot_offset(i));
   // h = d × e2, a = e1 · h
   const V hx = r.dy * e2z - r.dz * e2y, hy = r.dz * e2x - r.dx * e2z, hz = r.dx * e2y - r.dy * e2x;
   const V a = e1x * hx + e1y * hy + e1z * hz;
@@ -73,7 +82,7 @@ RAYVEC_INLINE LaneHits<V> test_paper(const TriangleArrays& T, uint32_t i, const 
   if (!any(out.mask)) return out;
   const V f = V::broadcast(1.0f) / a;
   // u
-  const V sx = r.ox - V::load(T.v0x + i), sy = r.oy - V::load(T.v0y + i), sz = r.oz - V::load(T.v0z + i);
+  const V sx = r.ox - V::load(T.v0x + slot_offset(i)), sy = r.oy - V::load(T.v0y + slot_offset(i)), sz = r.oz - V::load(T.v0z + slot_offset(i));
   out.u = f * (sx * hx + sy * hy + sz * hz);
   out.mask = out.mask & (out.u >= V::broadcast(0.0f)) & (out.u <= V::broadcast(1.0f));
   if (!any(out.mask)) return out;
@@ -94,14 +103,14 @@ RAYVEC_INLINE LaneHits<V> test_mt(const TriangleArrays& T, uint32_t i, const Ray
                                   typename V::Mask active, V tlimit) {
   using S = typename V::Scalar;
   LaneHits<V> out;
-  const V v0x = V::load(T.v0x + i), v0y = V::load(T.v0y + i), v0z = V::load(T.v0z + i);
+  const V v0x = V::load(T.v0x + slot_offset(i)), v0y = V::load(T.v0y + slot_offset(i)), v0z = V::load(T.v0z + slot_offset(i));
   V e1x, e1y, e1z, e2x, e2y, e2z;
   if constexpr (sizeof(S) == 8) {  // double: edges from the exact vertices
-    e1x = V::load(T.v1x + i) - v0x; e1y = V::load(T.v1y + i) - v0y; e1z = V::load(T.v1z + i) - v0z;
-    e2x = V::load(T.v2x + i) - v0x; e2y = V::load(T.v2y + i) - v0y; e2z = V::load(T.v2z + i) - v0z;
+    e1x = V::load(T.v1x + slot_offset(i)) - v0x; e1y = V::load(T.v1y + slot_offset(i)) - v0y; e1z = V::load(T.v1z + slot_offset(i)) - v0z;
+    e2x = V::load(T.v2x + slot_offset(i)) - v0x; e2y = V::load(T.v2y + slot_offset(i)) - v0y; e2z = V::load(T.v2z + slot_offset(i)) - v0z;
   } else {
-    e1x = V::load(T.e1x + i); e1y = V::load(T.e1y + i); e1z = V::load(T.e1z + i);
-    e2x = V::load(T.e2x + i); e2y = V::load(T.e2y + i); e2z = V::load(T.e2z + i);
+    e1x = V::load(T.e1x + slot_offset(i)); e1y = V::load(T.e1y + slot_offset(i)); e1z = V::load(T.e1z + slot_offset(i));
+    e2x = V::load(T.e2x + slot_offset(i)); e2y = V::load(T.e2y + slot_offset(i)); e2z = V::load(T.e2z + slot_offset(i));
   }
   // h = d × e2, det = e1 · h
   const V hx = fmsub(r.dy, e2z, r.dz * e2y);
@@ -149,8 +158,8 @@ void closest_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const R
   V best_t = V::broadcast(initial);
   V best_u = V::broadcast(S(0)), best_v = best_u, best_idx = best_u;
   bool found = false;
-  for (uint32_t i = begin; i < end; i += W) {
-    const LaneHits<V> h = test_lanes<V, I>(T, i, r, first_lanes(V{}, end - i), best_t);
+  for (uint32_t i = first_step(begin, W); i < end; i += W) {
+    const LaneHits<V> h = test_lanes<V, I>(T, i, r, step_lanes<V>(i, begin, end), best_t);
     if (any(h.mask)) {  // blend nearest t, u, v and triangle index
       best_t = select(h.mask, best_t, h.t);
       best_u = select(h.mask, best_u, h.u);
@@ -185,8 +194,8 @@ bool occluded_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const 
   if (!finite_ray(ray)) return false;
   const RayLanes<V> r = broadcast_ray<V>(ray);
   const V tlimit = V::broadcast(next_up(S(ray.tmax)));
-  for (uint32_t i = begin; i < end; i += V::W) {
-    const typename V::Mask m = test_lanes<V, I>(T, i, r, first_lanes(V{}, end - i), tlimit).mask;
+  for (uint32_t i = first_step(begin, V::W); i < end; i += V::W) {
+    const typename V::Mask m = test_lanes<V, I>(T, i, r, step_lanes<V>(i, begin, end), tlimit).mask;
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
@@ -221,7 +230,7 @@ struct MtNumerators {
 template <class V>
 struct MtTriangleLanes {
   uint32_t i;
-  RAYVEC_INLINE V operator()(const float* a) const { return V::load(a + i); }
+  RAYVEC_INLINE V operator()(const float* a) const { return V::load(a + slot_offset(i)); }
 };
 
 // The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` against the triangle lanes
@@ -395,9 +404,15 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
     q[k] = mt_ray<V>(rays[k], hits[k]);
     neg_lo[k] = V::broadcast(0.0f) - q[k].lo;
   }
-  // full steps without a lane mask, then the partial last step
+  // a head step if begin is not on a step, full steps without a lane mask, the partial last step
   const typename V::Mask all = first_lanes(V{}, W);
   uint32_t i = begin;
+  if (i % W != 0 && i < end) {
+    const uint32_t head = first_step(i, W);
+    for (int k = 0; k < R; ++k)
+      mt_closest_step<V, TminZero>(T, head, q[k].r, step_lanes<V>(head, begin, end), neg_lo[k], q[k].b);
+    i = head + W;
+  }
   for (; end - i >= uint32_t(W) && i < end; i += W)
     for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero>(T, i, q[k].r, all, neg_lo[k], q[k].b);
   if (i < end)
@@ -436,8 +451,8 @@ bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, co
   const V lo = V::broadcast(mt_lower(ray.tmin));
   const float limit = next_up(ray.tmax);
   const V tlimit = V::broadcast(limit), hi = V::broadcast(limit * kMtWiden);
-  for (uint32_t i = begin; i < end; i += V::W) {
-    const MtNumerators<V> c = mt_numerators<V, false>(T, i, r, first_lanes(V{}, end - i), lo, hi);
+  for (uint32_t i = first_step(begin, V::W); i < end; i += V::W) {
+    const MtNumerators<V> c = mt_numerators<V, false>(T, i, r, step_lanes<V>(i, begin, end), lo, hi);
     if (!any(c.mask)) continue;
     const V t = c.tn / c.adet;
     const typename V::Mask m = c.mask & (t >= r.tmin) & (t < tlimit);

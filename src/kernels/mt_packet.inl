@@ -36,7 +36,7 @@ struct MtPacketRays {
 template <class V>
 struct MtTriangleBroadcast {
   uint32_t i;
-  RAYVEC_INLINE V operator()(const float* a) const { return V::broadcast(a[i]); }
+  RAYVEC_INLINE V operator()(const float* a) const { return V::broadcast(a[slot_offset(i)]); }
 };
 
 // Slots [begin, end) against the lanes set in `lanes`. Per lane k: limit[k] = min(tmax_k,

@@ -9,7 +9,6 @@
 namespace rayvec {
 namespace {
 
-constexpr int kFloatArrays = 18;
 
 constexpr std::int64_t kParallelFill = 16384;  // fewer slots: fill on the calling thread
 
@@ -27,40 +26,47 @@ T* aligned_uninitialized(std::size_t n) {
 
 TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order) {
   const std::size_t n = order.empty() ? mesh.size() : order.size();
-  if (n > (1u << 31) - 2 * kBlock) throw std::length_error("too many triangles for TriangleSoA");
+  // slot_offset is 32-bit: every float of the blocks must have an offset below 2^32
+  constexpr std::size_t kMaxSlots = (std::size_t(1) << 32) / kSlotRows - 2 * kBlock;
+  if (n > kMaxSlots) throw std::length_error("too many triangles for TriangleSoA (at most 238 million)");
   count_ = static_cast<uint32_t>(n);
   padded_ = (count_ + kBlock - 1) / kBlock * kBlock + kBlock;  // one block of slack
-  floats_.reset(aligned_uninitialized<float>(std::size_t(padded_) * kFloatArrays));
+  floats_.reset(aligned_uninitialized<float>(std::size_t(padded_) * kSlotRows));
   ids_.reset(aligned_uninitialized<int32_t>(padded_));
 
+  // row k of every block starts kBlock·k floats into the block; hot rows (v0, ng, e2, e1: what the
+  // float `mt` kernel reads) first, then v1 and v2
+  enum Row { kV0, kNg = 3, kE2 = 6, kE1 = 9, kV1 = 12, kV2 = 15 };
   float* base = floats_.get();
-  float* a[kFloatArrays];
-  for (int k = 0; k < kFloatArrays; ++k) a[k] = base + std::size_t(k) * padded_;
   int32_t* ids = ids_.get();
 
   // every slot written once: triangles below count_, zero-area padding (id −1) above
   const std::int64_t slots = padded_, count = count_;
 #pragma omp parallel for schedule(static) if (slots >= kParallelFill)
   for (std::int64_t i = 0; i < slots; ++i) {
-    if (i >= count) {
-      for (int k = 0; k < kFloatArrays; ++k) a[k][i] = 0.0f;
+    float* const slot = base + slot_offset(uint32_t(i));
+    const uint32_t tri = i < count && !order.empty() ? order[std::size_t(i)] : uint32_t(i);
+    if (i >= count || tri == kPaddingSlot) {
+      for (uint32_t k = 0; k < kSlotRows; ++k) slot[k * kBlock] = 0.0f;
       ids[i] = -1;
       continue;
     }
-    const uint32_t tri = order.empty() ? uint32_t(i) : order[std::size_t(i)];
     const Vec3f p0 = mesh.vertex(tri, 0), p1 = mesh.vertex(tri, 1), p2 = mesh.vertex(tri, 2);
     const Vec3f e1 = p1 - p0, e2 = p2 - p0, ng = cross(e2, e1);
-    const float values[kFloatArrays] = {p0.x, p0.y, p0.z, e1.x, e1.y, e1.z, e2.x, e2.y, e2.z,
-                                        p1.x, p1.y, p1.z, p2.x, p2.y, p2.z, ng.x, ng.y, ng.z};
-    for (int k = 0; k < kFloatArrays; ++k) a[k][i] = values[k];
+    const Vec3f rows[] = {p0, ng, e2, e1, p1, p2};  // in Row order
+    for (uint32_t r = 0; r < 6; ++r)
+      for (uint32_t a = 0; a < 3; ++a) slot[(3 * r + a) * kBlock] = rows[r][int(a)];
     ids[i] = static_cast<int32_t>(tri);
   }
-  arrays_ = TriangleArrays{a[0],  a[1],  a[2],  a[3],  a[4],  a[5],  a[6],  a[7],  a[8],  a[9],
-                           a[10], a[11], a[12], a[13], a[14], a[15], a[16], a[17], ids, count_};
+  const auto row = [&](int k) -> const float* { return base + std::size_t(k) * kBlock; };
+  arrays_ = TriangleArrays{row(kV0),     row(kV0 + 1), row(kV0 + 2), row(kE1),     row(kE1 + 1),
+                           row(kE1 + 2), row(kE2),     row(kE2 + 1), row(kE2 + 2), row(kV1),
+                           row(kV1 + 1), row(kV1 + 2), row(kV2),     row(kV2 + 1), row(kV2 + 2),
+                           row(kNg),     row(kNg + 1), row(kNg + 2), ids,          count_};
 }
 
 std::size_t TriangleSoA::bytes() const {
-  return std::size_t(padded_) * (kFloatArrays * sizeof(float) + sizeof(int32_t));
+  return std::size_t(padded_) * (kSlotRows * sizeof(float) + sizeof(int32_t));
 }
 
 }  // namespace rayvec

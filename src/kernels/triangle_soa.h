@@ -1,10 +1,18 @@
-// TriangleSoA: triangles as structure-of-arrays, the layout of Sena et al. (2018) — one array per
+// TriangleSoA: triangles as structure-of-arrays, the layout of Sena et al. (2018) — one row per
 // coordinate, so W consecutive triangles load as one SIMD register per coordinate.
-// Departures from the paper: edges e1 = v1 − v0 and e2 = v2 − v0 are precomputed (the float kernels
-// read v0, e1, e2 and the normal ng = e2 × e1); v1 and v2 are kept too so double-precision and (later) watertight kernels
-// work from the exact input vertices. Arrays are 64-byte aligned and padded with zero-area triangles
-// (id −1) to a multiple of kBlock plus one block of slack, so a kernel may always load a full
-// register at any index below count.
+// Departures from the paper:
+// - edges e1 = v1 − v0 and e2 = v2 − v0 are precomputed (the float kernels read v0, e1, e2 and the
+//   normal ng = e2 × e1); v1 and v2 are kept too so double-precision and watertight kernels work
+//   from the exact input vertices;
+// - the rows are blocked (AoSoA): slots come in blocks of kBlock = 16, and a block stores all 18
+//   rows of its 16 slots one after the other (64 bytes a row), the 12 rows of the float `mt` kernel
+//   first. A BVH leaf is then one contiguous run of memory instead of a piece of each of 12 arrays
+//   megabytes apart (fewer cache lines and pages per leaf; docs/benchmarks.md, "Blocked triangle
+//   rows"). Slot i of row pointer p is p[slot_offset(i)]; a SIMD step loads W lanes from a slot
+//   that is a multiple of W (W divides kBlock), so it never crosses a block.
+// Rows are 64-byte aligned; the slots are padded with zero-area triangles (id −1) to a multiple of
+// kBlock plus one block of slack, so a kernel may always load a full register at any aligned slot
+// below count. Ids are a plain array (read only for hits).
 #pragma once
 #include <cstdint>
 #include <cstdlib>
@@ -18,8 +26,21 @@ namespace rayvec {
 
 struct TriangleMesh;
 
+inline constexpr uint32_t kSlotBlock = 16;                    // slots per block
+inline constexpr uint32_t kSlotRows = 18;                     // float rows per block
+inline constexpr uint32_t kSlotBlockFloats = kSlotBlock * kSlotRows;
+// The rows the float `mt` kernels read (v0, ng, e2, e1) are rows 0..kMtRows−1 of a block, v0x first,
+// so a block's hot part is the kMtRows·64 bytes from its slot-0 v0x.
+inline constexpr uint32_t kMtRows = 12;
+
+// Where slot i of a row lives, relative to that row's pointer in TriangleArrays. Internal linkage
+// (static): ISA units and baseline units each keep their own copy.
+static constexpr uint32_t slot_offset(uint32_t i) {
+  return i / kSlotBlock * kSlotBlockFloats + i % kSlotBlock;
+}
+
 // What the ISA kernels see: plain pointers, no member functions (ISA units must not instantiate
-// inline code shared with baseline units).
+// inline code shared with baseline units). Float rows are read at slot_offset(i), ids at [i].
 struct TriangleArrays {
   const float *v0x, *v0y, *v0z;
   const float *e1x, *e1y, *e1z;
@@ -35,10 +56,13 @@ struct TriangleArrays {
 
 class TriangleSoA {
  public:
-  static constexpr uint32_t kBlock = 16;  // widest SIMD width in floats (AVX-512)
+  static constexpr uint32_t kBlock = kSlotBlock;  // widest SIMD width in floats (AVX-512)
 
   TriangleSoA() = default;
-  // Triangles of `mesh` in the given order of triangle ids (all of them in id order when empty).
+  // Triangles of `mesh` in the given order of triangle ids (all of them in id order when empty);
+  // an entry kPaddingSlot in `order` makes a zero-area slot with id −1 (BVH leaves use it to start
+  // on a SIMD step).
+  static constexpr uint32_t kPaddingSlot = 0xffffffffu;
   explicit TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order = {});
 
   uint32_t size() const { return count_; }
@@ -47,12 +71,17 @@ class TriangleSoA {
   std::size_t bytes() const;
 
   // The triangle in slot i (for scalar reference code and tests).
-  Vec3f v0(uint32_t i) const { return {arrays_.v0x[i], arrays_.v0y[i], arrays_.v0z[i]}; }
-  Vec3f v1(uint32_t i) const { return {arrays_.v1x[i], arrays_.v1y[i], arrays_.v1z[i]}; }
-  Vec3f v2(uint32_t i) const { return {arrays_.v2x[i], arrays_.v2y[i], arrays_.v2z[i]}; }
+  Vec3f v0(uint32_t i) const { return row3(arrays_.v0x, arrays_.v0y, arrays_.v0z, i); }
+  Vec3f v1(uint32_t i) const { return row3(arrays_.v1x, arrays_.v1y, arrays_.v1z, i); }
+  Vec3f v2(uint32_t i) const { return row3(arrays_.v2x, arrays_.v2y, arrays_.v2z, i); }
   int32_t id(uint32_t i) const { return arrays_.id[i]; }
 
  private:
+  static Vec3f row3(const float* x, const float* y, const float* z, uint32_t i) {
+    const uint32_t k = slot_offset(i);
+    return {x[k], y[k], z[k]};
+  }
+
   struct FreeDeleter {
     void operator()(void* p) const { std::free(p); }
   };

@@ -103,10 +103,11 @@ RAYVEC_INLINE bool same_product(double a, double b, double c, double d) {
 // shearing rounds a collinear triangle into a sliver of nonzero area in ray space. The differences
 // of floats are exact in double unless the coordinates' exponents differ by more than 29.
 RAYVEC_COLD bool zero_area(const TriangleArrays& T, uint32_t j) {
-  const double e1x = double(T.v1x[j]) - T.v0x[j], e1y = double(T.v1y[j]) - T.v0y[j],
-               e1z = double(T.v1z[j]) - T.v0z[j];
-  const double e2x = double(T.v2x[j]) - T.v0x[j], e2y = double(T.v2y[j]) - T.v0y[j],
-               e2z = double(T.v2z[j]) - T.v0z[j];
+  const uint32_t k = slot_offset(j);
+  const double e1x = double(T.v1x[k]) - T.v0x[k], e1y = double(T.v1y[k]) - T.v0y[k],
+               e1z = double(T.v1z[k]) - T.v0z[k];
+  const double e2x = double(T.v2x[k]) - T.v0x[k], e2y = double(T.v2y[k]) - T.v0y[k],
+               e2z = double(T.v2z[k]) - T.v0z[k];
   return same_product(e1y, e2z, e1z, e2y) && same_product(e1z, e2x, e1x, e2z) &&
          same_product(e1x, e2y, e1y, e2x);
 }
@@ -118,14 +119,14 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
   using S = typename V::Scalar;
   LaneHits<V> out;
   // translate to the ray origin (exact vertices), z stays unsheared until needed
-  const V az = V::load(r.az + i) - r.oz, bz = V::load(r.bz + i) - r.oz, cz = V::load(r.cz + i) - r.oz;
+  const V az = V::load(r.az + slot_offset(i)) - r.oz, bz = V::load(r.bz + slot_offset(i)) - r.oz, cz = V::load(r.cz + slot_offset(i)) - r.oz;
   // shear into ray space (separate multiply and subtract: the same rounding on every ISA)
-  const V ax = (V::load(r.ax + i) - r.ox) - mul_rounded(r.sx, az);
-  const V ay = (V::load(r.ay + i) - r.oy) - mul_rounded(r.sy, az);
-  const V bx = (V::load(r.bx + i) - r.ox) - mul_rounded(r.sx, bz);
-  const V by = (V::load(r.by + i) - r.oy) - mul_rounded(r.sy, bz);
-  const V cx = (V::load(r.cx + i) - r.ox) - mul_rounded(r.sx, cz);
-  const V cy = (V::load(r.cy + i) - r.oy) - mul_rounded(r.sy, cz);
+  const V ax = (V::load(r.ax + slot_offset(i)) - r.ox) - mul_rounded(r.sx, az);
+  const V ay = (V::load(r.ay + slot_offset(i)) - r.oy) - mul_rounded(r.sy, az);
+  const V bx = (V::load(r.bx + slot_offset(i)) - r.ox) - mul_rounded(r.sx, bz);
+  const V by = (V::load(r.by + slot_offset(i)) - r.oy) - mul_rounded(r.sy, bz);
+  const V cx = (V::load(r.cx + slot_offset(i)) - r.ox) - mul_rounded(r.sx, cz);
+  const V cy = (V::load(r.cy + slot_offset(i)) - r.oy) - mul_rounded(r.sy, cz);
   // 2D edge functions (no FMA: a shared edge must give the exact negation in the neighbour)
   V u = mul_rounded(cx, by) - mul_rounded(cy, bx);
   V v = mul_rounded(ax, cy) - mul_rounded(ay, cx);
@@ -189,8 +190,8 @@ void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, c
   V best_t = V::broadcast(initial);
   V best_u = V::broadcast(S(0)), best_v = best_u, best_idx = best_u;
   bool found = false;
-  for (uint32_t i = begin; i < end; i += W) {
-    const LaneHits<V> h = test_watertight<V>(T, r, i, first_lanes(V{}, end - i), best_t);
+  for (uint32_t i = first_step(begin, W); i < end; i += W) {
+    const LaneHits<V> h = test_watertight<V>(T, r, i, step_lanes<V>(i, begin, end), best_t);
     if (any(h.mask)) {  // blend nearest t, u, v and triangle index
       best_t = select(h.mask, best_t, h.t);
       best_u = select(h.mask, best_u, h.u);
@@ -225,8 +226,8 @@ bool watertight_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, 
   if (!finite_ray(ray)) return false;
   const WatertightRay<V> r = watertight_ray<V>(T, ray);
   const V tlimit = V::broadcast(next_up(S(ray.tmax)));
-  for (uint32_t i = begin; i < end; i += V::W) {
-    const typename V::Mask m = test_watertight<V>(T, r, i, first_lanes(V{}, end - i), tlimit).mask;
+  for (uint32_t i = first_step(begin, V::W); i < end; i += V::W) {
+    const typename V::Mask m = test_watertight<V>(T, r, i, step_lanes<V>(i, begin, end), tlimit).mask;
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)

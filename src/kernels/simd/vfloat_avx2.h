@@ -94,6 +94,13 @@ RAYVEC_INLINE vmaskd first_lanes(vdouble, uint32_t n) {
   const int64_t limit = n >= 4 ? 4 : int64_t(n);
   return {_mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(limit), iota))};
 }
+// Lanes lo <= k < hi (lo <= hi; both may exceed W).
+RAYVEC_INLINE vmaskf lanes_between(vfloat v, uint32_t lo, uint32_t hi) {
+  return {_mm256_andnot_ps(first_lanes(v, lo).m, first_lanes(v, hi).m)};
+}
+RAYVEC_INLINE vmaskd lanes_between(vdouble v, uint32_t lo, uint32_t hi) {
+  return {_mm256_andnot_pd(first_lanes(v, lo).m, first_lanes(v, hi).m)};
+}
 RAYVEC_INLINE vfloat select(vmaskf m, vfloat a, vfloat b) { return {_mm256_blendv_ps(a.v, b.v, m.m)}; }
 RAYVEC_INLINE vdouble select(vmaskd m, vdouble a, vdouble b) { return {_mm256_blendv_pd(a.v, b.v, m.m)}; }
 

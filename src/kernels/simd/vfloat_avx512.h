@@ -108,6 +108,13 @@ RAYVEC_INLINE vmaskf first_lanes(vfloat, uint32_t n) {
 RAYVEC_INLINE vmaskd first_lanes(vdouble, uint32_t n) {
   return {n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1)};
 }
+// Lanes lo <= k < hi (lo <= hi; both may exceed W).
+RAYVEC_INLINE vmaskf lanes_between(vfloat v, uint32_t lo, uint32_t hi) {
+  return {__mmask16(first_lanes(v, hi).m & ~first_lanes(v, lo).m)};
+}
+RAYVEC_INLINE vmaskd lanes_between(vdouble v, uint32_t lo, uint32_t hi) {
+  return {__mmask8(first_lanes(v, hi).m & ~first_lanes(v, lo).m)};
+}
 // Lanes of b where m is set, of a elsewhere.
 RAYVEC_INLINE vfloat select(vmaskf m, vfloat a, vfloat b) { return {_mm512_mask_blend_ps(m.m, a.v, b.v)}; }
 RAYVEC_INLINE vdouble select(vmaskd m, vdouble a, vdouble b) { return {_mm512_mask_blend_pd(m.m, a.v, b.v)}; }

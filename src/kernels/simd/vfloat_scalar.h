@@ -49,6 +49,7 @@ RAYVEC_INLINE vmask operator&(vmask a, vmask b) { return {a.m && b.m}; }
 RAYVEC_INLINE bool any(vmask a) { return a.m; }
 RAYVEC_INLINE unsigned bits(vmask a) { return a.m ? 1u : 0u; }
 template <typename T, typename B> RAYVEC_INLINE vmask first_lanes(vlane<T, B>, uint32_t n) { return {n > 0}; }
+template <typename T, typename B> RAYVEC_INLINE vmask lanes_between(vlane<T, B>, uint32_t lo, uint32_t hi) { return {lo == 0 && hi > 0}; }
 template <typename T, typename B> RAYVEC_INLINE vlane<T, B> select(vmask m, vlane<T, B> a, vlane<T, B> b) { return m.m ? b : a; }
 
 // The smallest lane: the only one.

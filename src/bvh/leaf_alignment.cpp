@@ -1,0 +1,29 @@
+#include "bvh/leaf_alignment.h"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "kernels/triangle_soa.h"
+
+namespace rayvec {
+
+void align_leaves(BinaryBvh& tree, uint32_t step) {
+  if (step <= 1 || tree.nodes.empty()) return;
+  // leaves by their position in the old order (they tile it)
+  std::vector<std::pair<uint32_t, uint32_t>> leaves;  // (first, node)
+  for (uint32_t k = 0; k < tree.nodes.size(); ++k)
+    if (tree.nodes[k].leaf()) leaves.emplace_back(tree.nodes[k].first, k);
+  std::sort(leaves.begin(), leaves.end());
+  std::vector<uint32_t> order;
+  order.reserve(tree.order.size() + leaves.size() * (step - 1));
+  for (const auto& [first, k] : leaves) {
+    BinaryNode& leaf = tree.nodes[k];
+    while (order.size() % step != 0) order.push_back(TriangleSoA::kPaddingSlot);
+    leaf.first = uint32_t(order.size());
+    order.insert(order.end(), tree.order.begin() + first, tree.order.begin() + first + leaf.count);
+  }
+  tree.order = std::move(order);
+}
+
+}  // namespace rayvec

@@ -1,0 +1,72 @@
+// align_leaves: every leaf starts on a multiple of the step, keeps its triangles in their order,
+// and only padding slots fill the gaps; the wide BVH built from the aligned tree still holds
+// every triangle exactly once, and the TriangleSoA turns padding entries into id −1 slots.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "bvh/binned_sah_builder.h"
+#include "bvh/leaf_alignment.h"
+#include "bvh/wide_bvh.h"
+#include "kernels/triangle_soa.h"
+#include "bvh_scenes.h"
+
+namespace rayvec {
+namespace {
+
+std::vector<std::vector<uint32_t>> leaf_contents(const BinaryBvh& tree) {
+  std::vector<std::vector<uint32_t>> out;
+  for (const BinaryNode& n : tree.nodes)
+    if (n.leaf()) out.emplace_back(tree.order.begin() + n.first, tree.order.begin() + n.first + n.count);
+  return out;
+}
+
+TEST(LeafAlignment, LeavesStartOnTheStepAndKeepTheirTriangles) {
+  const TriangleMesh mesh = test::random_soup(3000, 0.05f, 5);
+  for (uint32_t step : {1u, 8u, 16u}) {
+    BinaryBvh tree = build_binned_sah(mesh);
+    const auto before = leaf_contents(tree);
+    const std::size_t slots_before = tree.order.size();
+    align_leaves(tree, step);
+    EXPECT_EQ(leaf_contents(tree), before) << "step " << step;
+    std::vector<int> covered(tree.order.size(), 0);
+    std::size_t unaligned = 0;
+    for (const BinaryNode& n : tree.nodes) {
+      if (!n.leaf()) continue;
+      unaligned += n.first % step != 0;
+      for (uint32_t s = n.first; s < n.first + n.count; ++s) ++covered[s];
+    }
+    EXPECT_EQ(unaligned, 0u) << "step " << step;
+    std::size_t padding = 0;
+    for (std::size_t s = 0; s < tree.order.size(); ++s) {
+      const bool pad = tree.order[s] == TriangleSoA::kPaddingSlot;
+      padding += pad;
+      EXPECT_EQ(covered[s], pad ? 0 : 1) << "slot " << s;
+    }
+    EXPECT_EQ(tree.order.size() - padding, slots_before);
+    if (step == 1) EXPECT_EQ(padding, 0u);
+    if (step == 16) EXPECT_GT(padding, 0u);  // 3000 random triangles do not tile 16-slot steps
+  }
+}
+
+TEST(LeafAlignment, PaddingSlotsBecomeZeroAreaSlotsWithoutId) {
+  const TriangleMesh mesh = test::random_soup(500, 0.05f, 9);
+  BinaryBvh tree = build_binned_sah(mesh);
+  align_leaves(tree, 16);
+  const TriangleSoA soa(mesh, tree.order);
+  const WideBvh wide(tree, 8);
+  ASSERT_EQ(soa.size(), tree.order.size());
+  for (uint32_t s = 0; s < soa.size(); ++s) {
+    if (tree.order[s] != TriangleSoA::kPaddingSlot) {
+      ASSERT_EQ(soa.id(s), int32_t(tree.order[s]));
+      continue;
+    }
+    ASSERT_EQ(soa.id(s), -1) << "slot " << s;
+    const Vec3f a = soa.v0(s), b = soa.v1(s), c = soa.v2(s);
+    ASSERT_TRUE(a.x == 0 && a.y == 0 && a.z == 0 && b.x == 0 && c.z == 0) << "slot " << s;
+  }
+  EXPECT_EQ(wide.leaf_count(), leaf_contents(tree).size());
+}
+
+}  // namespace
+}  // namespace rayvec
