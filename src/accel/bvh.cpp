@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bvh/leaf_alignment.h"
+#include "scene/mesh.h"
 
 namespace rayvec {
 namespace {
@@ -22,7 +23,7 @@ Bvh::Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& 
     : config_(config),
       kernels_(&triangle_kernels(config.isa, config.intersector)),
       traversal_(&bvh_kernels(config.isa,
-                              options.width ? options.width : bvh_widths(config.isa).widths[0])) {
+                              options.width ? options.width : default_bvh_width(config.isa, mesh.size()))) {
   SahConfig sah = options.sah;
   if (options.leaves_from_kernel && kernels_->width >= 8) {
     sah.leaf_block = uint32_t(kernels_->width);

@@ -16,6 +16,10 @@ BvhWidths bvh_widths(Isa isa) {
   return {{8, 4, 0}, 2};
 }
 
+int default_bvh_width(Isa isa, std::size_t triangles) {
+  return isa == Isa::avx512 && triangles >= kWideNodeTriangles ? 16 : 8;
+}
+
 const BvhKernels& bvh_kernels(Isa isa, int width) {
   if (!isa_supported(isa))
     throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));

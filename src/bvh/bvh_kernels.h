@@ -28,13 +28,18 @@ struct BvhKernels {
   int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
 };
 
-// The node widths an ISA has traversal code for, the first being its default (measured, see
-// docs/benchmarks.md).
+// The node widths an ISA has traversal code for.
 struct BvhWidths {
   int widths[3];
   int count;
 };
 BvhWidths bvh_widths(Isa isa);
+
+// The node width a BVH over `triangles` triangles gets by default (measured, docs/benchmarks.md,
+// "Blocked triangle rows and 16-wide nodes"): 16 on AVX-512 from kWideNodeTriangles triangles up
+// (deep trees: fewer levels, so fewer dependent node fetches per ray), else 8.
+inline constexpr std::size_t kWideNodeTriangles = 32768;
+int default_bvh_width(Isa isa, std::size_t triangles);
 
 // The table for (isa, width); the ISA must be supported and the width one of bvh_widths(isa).
 const BvhKernels& bvh_kernels(Isa isa, int width);

@@ -5,7 +5,9 @@
 
 #include <vector>
 
+#include "accel/bvh.h"
 #include "bvh/binned_sah_builder.h"
+#include "bvh/bvh_kernels.h"
 #include "bvh/leaf_alignment.h"
 #include "bvh/wide_bvh.h"
 #include "kernels/triangle_soa.h"
@@ -66,6 +68,23 @@ TEST(LeafAlignment, PaddingSlotsBecomeZeroAreaSlotsWithoutId) {
     ASSERT_TRUE(a.x == 0 && a.y == 0 && a.z == 0 && b.x == 0 && c.z == 0) << "slot " << s;
   }
   EXPECT_EQ(wide.leaf_count(), leaf_contents(tree).size());
+}
+
+// The default node width (bvh_kernels.h): 16 on AVX-512 for deep trees, 8 otherwise; and a Bvh
+// leaves start on its kernel's width.
+TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesOnlyForLargeMeshesOnAvx512) {
+  EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles), 16);
+  EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles - 1), 8);
+  EXPECT_EQ(default_bvh_width(Isa::avx2, 1u << 20), 8);
+  EXPECT_EQ(default_bvh_width(Isa::scalar, 1u << 20), 8);
+  if (!isa_supported(Isa::avx512)) GTEST_SKIP() << "no AVX-512 on this CPU: the built-Bvh half is skipped";
+  const TriangleMesh big = test::random_soup(int(kWideNodeTriangles), 0.01f, 3);
+  const Bvh bvh(big, TraceConfig{Isa::avx512, Intersector::mt});
+  EXPECT_EQ(bvh.tree().width(), 16);
+  const auto* nodes = static_cast<const WideNode<16>*>(bvh.tree().arrays().nodes);
+  for (uint32_t n = 0; n < bvh.tree().node_count(); ++n)
+    for (uint32_t ref : nodes[n].ref)
+      if (ref != kEmptyRef && (ref & kLeafFlag)) ASSERT_EQ(((ref >> 5) & (kMaxLeafBegin - 1)) % 16, 0u);
 }
 
 }  // namespace
