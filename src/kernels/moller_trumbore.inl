@@ -177,12 +177,12 @@ void closest_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const R
   for (int k = 0; k < W; ++k) {
     if (!(ts[k] < initial)) continue;
     if (k_best < 0 || ts[k] < ts[k_best] ||
-        (ts[k] == ts[k_best] && T.id[idx[k]] < T.id[idx[k_best]]))
+        (ts[k] == ts[k_best] && T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
       k_best = k;
   }
   if (k_best < 0) return;
   const float t = float(ts[k_best]);
-  const int32_t id = T.id[idx[k_best]];
+  const int32_t id = T.id[slot_offset(uint32_t(idx[k_best]))];
   if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri)))
     hit = Hit{t, float(us[k_best]), float(vs[k_best]), id};
 }
@@ -199,7 +199,7 @@ bool occluded_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const 
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
-      if (!filter->ignore(filter->context, T.id[i + unsigned(__builtin_ctz(lanes))])) return true;
+      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))])) return true;
   }
   return false;
 }
@@ -364,12 +364,12 @@ RAYVEC_INLINE void mt_finish(const TriangleArrays& T, const MtBest<V>& b, float 
   for (int k = 0; k < W; ++k) {
     if (!(ts[k] < initial)) continue;
     if (k_best < 0 || ts[k] < ts[k_best] ||
-        (ts[k] == ts[k_best] && T.id[idx[k]] < T.id[idx[k_best]]))
+        (ts[k] == ts[k_best] && T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
       k_best = k;
   }
   if (k_best < 0) return;
   const float t = ts[k_best];
-  const int32_t id = T.id[idx[k_best]];
+  const int32_t id = T.id[slot_offset(uint32_t(idx[k_best]))];
   if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri)))
     hit = Hit{t, (0.0f - us[k_best]) / as[k_best], vs[k_best] / as[k_best], id};  // 0 − un: no −0
 }
@@ -459,7 +459,7 @@ bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, co
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
-      if (!filter->ignore(filter->context, T.id[i + unsigned(__builtin_ctz(lanes))])) return true;
+      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))])) return true;
   }
   return false;
 }

@@ -101,7 +101,7 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   for (unsigned m = found; m != 0; m &= m - 1) {
     const int k = __builtin_ctz(m);
     const float t = ts[k];
-    const int32_t id = T.id[__builtin_bit_cast(uint32_t, ss[k])];
+    const int32_t id = T.id[slot_offset(__builtin_bit_cast(uint32_t, ss[k]))];
     Hit& hit = hits[k];
     if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri))) {
       hit = Hit{t, us[k], vs[k], id};

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <new>
 #include <stdexcept>
+#include <string>
 
 #include "scene/mesh.h"
 
@@ -14,12 +15,11 @@ constexpr std::int64_t kParallelFill = 16384;  // fewer slots: fill on the calli
 
 // Uninitialized: the fill below writes every slot, in parallel, so the pages are first touched by
 // the threads that fill them (a serial memset was a third of the fill's time on 1M triangles).
-template <typename T>
-T* aligned_uninitialized(std::size_t n) {
-  const std::size_t bytes = ((n * sizeof(T) + 63) / 64) * 64;
+void* aligned_uninitialized(std::size_t bytes) {
+  bytes = (bytes + 63) / 64 * 64;
   void* p = std::aligned_alloc(64, bytes == 0 ? 64 : bytes);
   if (!p) throw std::bad_alloc();
-  return static_cast<T*>(p);
+  return p;
 }
 
 }  // namespace
@@ -28,17 +28,18 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
   const std::size_t n = order.empty() ? mesh.size() : order.size();
   // slot_offset is 32-bit: every float of the blocks must have an offset below 2^32
   constexpr std::size_t kMaxSlots = (std::size_t(1) << 32) / kSlotRows - 2 * kBlock;
-  if (n > kMaxSlots) throw std::length_error("too many triangles for TriangleSoA (at most 238 million)");
+  if (n > kMaxSlots)
+    throw std::length_error("too many triangles for TriangleSoA (at most " + std::to_string(kMaxSlots) + ")");
   count_ = static_cast<uint32_t>(n);
   padded_ = (count_ + kBlock - 1) / kBlock * kBlock + kBlock;  // one block of slack
-  floats_.reset(aligned_uninitialized<float>(std::size_t(padded_) * kSlotRows));
-  ids_.reset(aligned_uninitialized<int32_t>(padded_));
+  blocks_.reset(aligned_uninitialized(std::size_t(padded_) * kSlotRows * 4));
 
-  // row k of every block starts kBlock·k floats into the block; hot rows (v0, ng, e2, e1: what the
-  // float `mt` kernel reads) first, then v1 and v2
-  enum Row { kV0, kNg = 3, kE2 = 6, kE1 = 9, kV1 = 12, kV2 = 15 };
-  float* base = floats_.get();
-  int32_t* ids = ids_.get();
+  // row k of every block starts kBlock·k 4-byte values into the block; hot rows (v0, ng, e2, e1:
+  // what the float `mt` kernel reads) first, then the ids, then v1 and v2. Each row holds one type
+  // (the id row only int32, the others only float).
+  enum Row { kV0, kNg = 3, kE2 = 6, kE1 = 9, kId = 12, kV1 = 13, kV2 = 16 };
+  float* base = static_cast<float*>(blocks_.get());
+  int32_t* ids = reinterpret_cast<int32_t*>(base + std::size_t(kId) * kBlock);
 
   // every slot written once: triangles below count_, zero-area padding (id −1) above
   const std::int64_t slots = padded_, count = count_;
@@ -46,17 +47,20 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
   for (std::int64_t i = 0; i < slots; ++i) {
     float* const slot = base + slot_offset(uint32_t(i));
     const uint32_t tri = i < count && !order.empty() ? order[std::size_t(i)] : uint32_t(i);
+    int32_t& id = ids[slot_offset(uint32_t(i))];
     if (i >= count || tri == kPaddingSlot) {
-      for (uint32_t k = 0; k < kSlotRows; ++k) slot[k * kBlock] = 0.0f;
-      ids[i] = -1;
+      for (uint32_t k = 0; k < kSlotRows; ++k)
+        if (k != kId) slot[k * kBlock] = 0.0f;
+      id = -1;
       continue;
     }
     const Vec3f p0 = mesh.vertex(tri, 0), p1 = mesh.vertex(tri, 1), p2 = mesh.vertex(tri, 2);
     const Vec3f e1 = p1 - p0, e2 = p2 - p0, ng = cross(e2, e1);
-    const Vec3f rows[] = {p0, ng, e2, e1, p1, p2};  // in Row order
+    const Vec3f rows[] = {p0, ng, e2, e1, p1, p2};
+    const int first[] = {kV0, kNg, kE2, kE1, kV1, kV2};
     for (uint32_t r = 0; r < 6; ++r)
-      for (uint32_t a = 0; a < 3; ++a) slot[(3 * r + a) * kBlock] = rows[r][int(a)];
-    ids[i] = static_cast<int32_t>(tri);
+      for (uint32_t a = 0; a < 3; ++a) slot[(first[r] + a) * kBlock] = rows[r][int(a)];
+    id = static_cast<int32_t>(tri);
   }
   const auto row = [&](int k) -> const float* { return base + std::size_t(k) * kBlock; };
   arrays_ = TriangleArrays{row(kV0),     row(kV0 + 1), row(kV0 + 2), row(kE1),     row(kE1 + 1),
@@ -66,7 +70,7 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
 }
 
 std::size_t TriangleSoA::bytes() const {
-  return std::size_t(padded_) * (kSlotRows * sizeof(float) + sizeof(int32_t));
+  return std::size_t(padded_) * kSlotRows * 4;
 }
 
 }  // namespace rayvec

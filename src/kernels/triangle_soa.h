@@ -4,15 +4,16 @@
 // - edges e1 = v1 − v0 and e2 = v2 − v0 are precomputed (the float kernels read v0, e1, e2 and the
 //   normal ng = e2 × e1); v1 and v2 are kept too so double-precision and watertight kernels work
 //   from the exact input vertices;
-// - the rows are blocked (AoSoA): slots come in blocks of kBlock = 16, and a block stores all 18
-//   rows of its 16 slots one after the other (64 bytes a row), the 12 rows of the float `mt` kernel
-//   first. A BVH leaf is then one contiguous run of memory instead of a piece of each of 12 arrays
+// - the rows are blocked (AoSoA): slots come in blocks of kBlock = 16, and a block stores all 19
+//   rows of its 16 slots one after the other (64 bytes a row): the 12 rows of the float `mt` kernel
+//   first, then the triangle ids (read for every hit: beside the rows, not in a separate array
+//   whose line is one more cache miss per hit leaf), then v1 and v2. A BVH leaf is then one contiguous run of memory instead of a piece of each of 12 arrays
 //   megabytes apart (fewer cache lines and pages per leaf; docs/benchmarks.md, "Blocked triangle
 //   rows"). Slot i of row pointer p is p[slot_offset(i)]; a SIMD step loads W lanes from a slot
 //   that is a multiple of W (W divides kBlock), so it never crosses a block.
 // Rows are 64-byte aligned; the slots are padded with zero-area triangles (id −1) to a multiple of
 // kBlock plus one block of slack, so a kernel may always load a full register at any aligned slot
-// below count. Ids are a plain array (read only for hits).
+// below count.
 #pragma once
 #include <cstdint>
 #include <cstdlib>
@@ -27,7 +28,7 @@ namespace rayvec {
 struct TriangleMesh;
 
 inline constexpr uint32_t kSlotBlock = 16;                    // slots per block
-inline constexpr uint32_t kSlotRows = 18;                     // float rows per block
+inline constexpr uint32_t kSlotRows = 19;                     // 4-byte rows per block
 inline constexpr uint32_t kSlotBlockFloats = kSlotBlock * kSlotRows;
 // The rows the float `mt` kernels read (v0, ng, e2, e1) are rows 0..kMtRows−1 of a block, v0x first,
 // so a block's hot part is the kMtRows·64 bytes from its slot-0 v0x.
@@ -40,7 +41,7 @@ static constexpr uint32_t slot_offset(uint32_t i) {
 }
 
 // What the ISA kernels see: plain pointers, no member functions (ISA units must not instantiate
-// inline code shared with baseline units). Float rows are read at slot_offset(i), ids at [i].
+// inline code shared with baseline units). Every row, ids included, is read at slot_offset(i).
 struct TriangleArrays {
   const float *v0x, *v0y, *v0z;
   const float *e1x, *e1y, *e1z;
@@ -50,7 +51,7 @@ struct TriangleArrays {
   // ng = e2 × e1, the unnormalized geometric normal (Embree's orientation), so the float `mt` kernel
   // gets det = d · ng and t·det = (v0 − o) · ng without recomputing a cross product per ray.
   const float *ngx, *ngy, *ngz;
-  const int32_t* id;  // triangle id per slot; ids inside any range a kernel is given must increase
+  const int32_t* id;  // triangle id per slot (−1: padding); ids inside any range a kernel is given must increase
   uint32_t count;     // real triangles (slots [count, padded) are zero-area padding)
 };
 
@@ -74,7 +75,7 @@ class TriangleSoA {
   Vec3f v0(uint32_t i) const { return row3(arrays_.v0x, arrays_.v0y, arrays_.v0z, i); }
   Vec3f v1(uint32_t i) const { return row3(arrays_.v1x, arrays_.v1y, arrays_.v1z, i); }
   Vec3f v2(uint32_t i) const { return row3(arrays_.v2x, arrays_.v2y, arrays_.v2z, i); }
-  int32_t id(uint32_t i) const { return arrays_.id[i]; }
+  int32_t id(uint32_t i) const { return arrays_.id[slot_offset(i)]; }
 
  private:
   static Vec3f row3(const float* x, const float* y, const float* z, uint32_t i) {
@@ -85,8 +86,7 @@ class TriangleSoA {
   struct FreeDeleter {
     void operator()(void* p) const { std::free(p); }
   };
-  std::unique_ptr<float, FreeDeleter> floats_;
-  std::unique_ptr<int32_t, FreeDeleter> ids_;
+  std::unique_ptr<void, FreeDeleter> blocks_;
   TriangleArrays arrays_{};
   uint32_t count_ = 0, padded_ = 0;
 };

@@ -209,12 +209,12 @@ void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, c
   for (int k = 0; k < W; ++k) {
     if (!(ts[k] < initial)) continue;
     if (k_best < 0 || ts[k] < ts[k_best] ||
-        (ts[k] == ts[k_best] && T.id[idx[k]] < T.id[idx[k_best]]))
+        (ts[k] == ts[k_best] && T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
       k_best = k;
   }
   if (k_best < 0) return;
   const float t = float(ts[k_best]);
-  const int32_t id = T.id[idx[k_best]];
+  const int32_t id = T.id[slot_offset(uint32_t(idx[k_best]))];
   if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri)))
     hit = Hit{t, float(us[k_best]), float(vs[k_best]), id};
 }
@@ -231,7 +231,7 @@ bool watertight_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, 
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
-      if (!filter->ignore(filter->context, T.id[i + unsigned(__builtin_ctz(lanes))])) return true;
+      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))])) return true;
   }
   return false;
 }
