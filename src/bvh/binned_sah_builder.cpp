@@ -9,6 +9,7 @@
 #include <memory>
 #include <new>
 
+#include "kernels/large_buffer.h"
 #include "scene/mesh.h"
 
 namespace rayvec {
@@ -82,7 +83,8 @@ class Builder {
       : config_(config), bins_(std::clamp(config.bins, 2, kMaxBins)), out_(out) {
     const std::size_t n = mesh.size();
     // uninitialized (no serial zeroing of 32 bytes a triangle): the parallel loop writes each one
-    prims_.reset(new Prim[n]);
+    prims_buffer_ = allocate_large_buffer(sizeof(Prim) * n);
+    prims_ = static_cast<Prim*>(prims_buffer_.get());
     count_ = n;
     out_.order.resize(n);
     const auto count = static_cast<std::int64_t>(n);
@@ -105,7 +107,10 @@ class Builder {
     // more than the parallel parts of the build it preceded); run() copies out the used prefix
     if (n > 0) nodes_.reset(static_cast<BinaryNode*>(::operator new(sizeof(BinaryNode) * (2 * n - 1))));
     // uninitialized (no serial zeroing): the partitions of the large ranges go through it
-    if (n >= kParallelBinning) scratch_.reset(new Prim[n]);
+    if (n >= kParallelBinning) {
+      scratch_buffer_ = allocate_large_buffer(sizeof(Prim) * n);
+      scratch_ = static_cast<Prim*>(scratch_buffer_.get());
+    }
   }
 
   void run() {
@@ -245,7 +250,7 @@ class Builder {
   // only on the set of primitives in a range.
   template <class F>
   uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left) {
-    Prim* data = prims_.get();
+    Prim* data = prims_;
     if (!chunked(end - begin, depth) || !scratch_)
       return uint32_t(std::partition(data + begin, data + end, goes_left) - data);
     constexpr int C = kBinningChunks;
@@ -273,7 +278,7 @@ class Builder {
       l += lefts[c];
       r += (ce > cb ? ce - cb : 0) - lefts[c];
     }
-    Prim* scratch = scratch_.get();
+    Prim* scratch = scratch_;
     for (int c = 0; c < C; ++c) {
       const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
       const uint32_t l0 = left_at[c], r0 = right_at[c];
@@ -322,7 +327,7 @@ class Builder {
       const Vec3f e = cbox.extent();
       const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
       mid = begin + n / 2;
-      std::nth_element(prims_.get() + begin, prims_.get() + mid, prims_.get() + end,
+      std::nth_element(prims_ + begin, prims_ + mid, prims_ + end,
                        [&](const Prim& a, const Prim& b) {
                          const float ca = a.centroid(axis), cb = b.centroid(axis);
                          return ca < cb || (ca == cb && a.id < b.id);
@@ -351,9 +356,12 @@ class Builder {
   const int threads_ = omp_get_max_threads();
   const int bins_;
   BinaryBvh& out_;
-  std::unique_ptr<Prim[]> prims_;
+  // primitive records and the partition buffer (ranges of kParallelBinning or more): LargeBuffers,
+  // uninitialized; the constructor's parallel loop writes every record
+  LargeBuffer prims_buffer_, scratch_buffer_;
+  Prim* prims_ = nullptr;
   std::size_t count_ = 0;
-  std::unique_ptr<Prim[]> scratch_;  // partition buffer for ranges of kParallelBinning or more
+  Prim* scratch_ = nullptr;
   struct OperatorDelete {
     void operator()(BinaryNode* p) const { ::operator delete(p); }
   };

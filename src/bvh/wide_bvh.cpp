@@ -5,6 +5,7 @@
 #include <limits>
 #include <new>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace rayvec {
@@ -102,14 +103,14 @@ class Collapser {
   uint32_t depth_ = 0, leaves_ = 0;
 };
 
+// The nodes in a LargeBuffer (huge pages for big trees: fewer TLB misses per node fetch).
 template <int N>
-void* collapse(const BinaryBvh& tree, uint32_t& count, uint32_t& depth, uint32_t& leaves,
-               std::size_t& bytes) {
+LargeBuffer collapse(const BinaryBvh& tree, uint32_t& count, uint32_t& depth, uint32_t& leaves,
+                     std::size_t& bytes) {
   const std::vector<WideNode<N>> nodes = Collapser<N>(tree).run(depth, leaves);
   bytes = nodes.size() * sizeof(WideNode<N>);
-  void* p = std::aligned_alloc(64, bytes);
-  if (!p) throw std::bad_alloc();
-  std::memcpy(p, nodes.data(), bytes);
+  LargeBuffer p = allocate_large_buffer(bytes);
+  std::memcpy(p.get(), nodes.data(), bytes);
   count = static_cast<uint32_t>(nodes.size());
   return p;
 }
@@ -120,15 +121,15 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width) {
   if (tree.order.size() >= kMaxLeafBegin)
     throw std::length_error("BVH: at most 2^26 - 1 triangles are supported");
   uint32_t count = 0;
-  void* p = nullptr;
+  LargeBuffer p;
   switch (width) {
     case 4: p = collapse<4>(tree, count, depth_, leaves_, bytes_); break;
     case 8: p = collapse<8>(tree, count, depth_, leaves_, bytes_); break;
     case 16: p = collapse<16>(tree, count, depth_, leaves_, bytes_); break;
     default: throw std::invalid_argument("BVH width must be 4, 8 or 16");
   }
-  storage_.reset(p);
-  arrays_ = BvhArrays{p, uint32_t(width), count, depth_ * uint32_t(width - 1) + 1, kDefaultBoxEpsilon};
+  storage_ = std::move(p);
+  arrays_ = BvhArrays{storage_.get(), uint32_t(width), count, depth_ * uint32_t(width - 1) + 1, kDefaultBoxEpsilon};
 }
 
 }  // namespace rayvec

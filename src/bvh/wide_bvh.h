@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "bvh/binned_sah_builder.h"
+#include "kernels/large_buffer.h"
 
 namespace rayvec {
 
@@ -58,10 +59,7 @@ class WideBvh {
   void set_box_epsilon(float eps) { arrays_.box_epsilon = eps; }
 
  private:
-  struct FreeDeleter {
-    void operator()(void* p) const { std::free(p); }
-  };
-  std::unique_ptr<void, FreeDeleter> storage_;
+  LargeBuffer storage_;
   BvhArrays arrays_{};
   uint32_t depth_ = 0, leaves_ = 0;
   std::size_t bytes_ = 0;

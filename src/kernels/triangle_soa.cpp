@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernels/large_buffer.h"
 #include "scene/mesh.h"
 
 namespace rayvec {
@@ -13,15 +14,9 @@ namespace {
 
 constexpr std::int64_t kParallelFill = 16384;  // fewer slots: fill on the calling thread
 
-// Uninitialized: the fill below writes every slot, in parallel, so the pages are first touched by
-// the threads that fill them (a serial memset was a third of the fill's time on 1M triangles).
-void* aligned_uninitialized(std::size_t bytes) {
-  bytes = (bytes + 63) / 64 * 64;
-  void* p = std::aligned_alloc(64, bytes == 0 ? 64 : bytes);
-  if (!p) throw std::bad_alloc();
-  return p;
-}
-
+// Uninitialized (LargeBuffer): the fill below writes every slot, in parallel, so the pages are
+// first touched by the threads that fill them (a serial memset was a third of the fill's time on
+// 1M triangles).
 }  // namespace
 
 TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order) {
@@ -32,7 +27,7 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
     throw std::length_error("too many triangles for TriangleSoA (at most " + std::to_string(kMaxSlots) + ")");
   count_ = static_cast<uint32_t>(n);
   padded_ = (count_ + kBlock - 1) / kBlock * kBlock + kBlock;  // one block of slack
-  blocks_.reset(aligned_uninitialized(std::size_t(padded_) * kSlotRows * 4));
+  blocks_ = allocate_large_buffer(std::size_t(padded_) * kSlotRows * 4);
 
   // row k of every block starts kBlock·k 4-byte values into the block; hot rows (v0, ng, e2, e1:
   // what the float `mt` kernel reads) first, then the ids, then v1 and v2. Each row holds one type

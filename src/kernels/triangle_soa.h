@@ -21,6 +21,7 @@
 #include <span>
 #include <vector>
 
+#include "kernels/large_buffer.h"
 #include "math/vec3.h"
 
 namespace rayvec {
@@ -83,10 +84,7 @@ class TriangleSoA {
     return {x[k], y[k], z[k]};
   }
 
-  struct FreeDeleter {
-    void operator()(void* p) const { std::free(p); }
-  };
-  std::unique_ptr<void, FreeDeleter> blocks_;
+  LargeBuffer blocks_;
   TriangleArrays arrays_{};
   uint32_t count_ = 0, padded_ = 0;
 };
