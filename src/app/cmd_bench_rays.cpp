@@ -114,7 +114,9 @@ int run(const Options& o) {
   const BenchRays rays = make_bench_rays(mesh, width, height, *ours);
   double embree_build_s = 0;
   std::unique_ptr<RayTracer> embree;
-  if (o.vs_embree) embree = make_embree_tracer(mesh, threads, embree_build_s);
+  // the rival gets the same ISA: Embree's widest at most rayvec's (it has no scalar code: SSE2)
+  const char* embree_isa = config.isa == Isa::avx512 ? "avx512" : (config.isa == Isa::avx2 ? "avx2" : "sse2");
+  if (o.vs_embree) embree = make_embree_tracer(mesh, threads, embree_isa, embree_build_s);
   std::vector<const RayTracer*> tracers{ours.get()};
   if (embree) tracers.push_back(embree.get());
   const std::vector<TracerRun> runs = run_bench_rays(tracers, rays, o.repeats);
@@ -133,7 +135,7 @@ int run(const Options& o) {
                 build_s, bytes_per_tri);
     print_sets_json(run);
     if (o.vs_embree) {
-      std::printf(",\"embree\":{\"build_s\":%.6f,", embree_build_s);
+      std::printf(",\"embree\":{\"build_s\":%.6f,\"max_isa\":\"%s\",", embree_build_s, embree_isa);
       print_sets_json(rival_run);
       std::printf(",\"mismatches\":{\"primary\":%llu,\"primary_packet\":%llu,\"shadow\":%llu,"
                   "\"incoherent\":%llu}}",
@@ -156,8 +158,9 @@ int run(const Options& o) {
               build_s, bytes_per_tri, double(bvh.tree().bytes()) / tris,
               double(bvh.triangles().bytes()) / tris);
   if (o.vs_embree)
-    std::printf("embree: RTC_BUILD_QUALITY_HIGH build %.4f s (rayvec/embree build time %.2f)\n",
-                embree_build_s, embree_build_s > 0 ? build_s / embree_build_s : 0.0);
+    std::printf("embree: max_isa=%s, RTC_BUILD_QUALITY_HIGH build %.4f s (rayvec/embree build time "
+                "%.2f)\n",
+                embree_isa, embree_build_s, embree_build_s > 0 ? build_s / embree_build_s : 0.0);
   std::printf("%-15s %10s %10s %22s %9s", "set", "rays", "hits", "checksum", "Mrays/s");
   if (o.vs_embree) std::printf(" %9s %8s %10s", "embree", "ratio", "mismatches");
   std::printf("\n");

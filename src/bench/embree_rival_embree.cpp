@@ -1,6 +1,7 @@
 // The Embree 3 rival of `rayvec bench rays --vs-embree` — the only file that includes Embree.
 // Scene: one RTC_GEOMETRY_TYPE_TRIANGLE with the mesh's shared vertices, RTC_BUILD_QUALITY_HIGH
-// (Embree's SAH builder with spatial splits), a device with `threads` build threads. Queries:
+// (Embree's SAH builder with spatial splits), a device with `threads` build threads whose ISA is
+// capped at rayvec's (config max_isa), so `--isa avx2` compares against Embree's AVX2 code. Queries:
 // rtcIntersect1 per ray, rtcIntersect16 per 4×4 tile, rtcOccluded1 per shadow ray, each with a
 // fresh RTCIntersectContext (coherent flag for the packets), from rayvec's own OpenMP threads.
 #include <embree3/rtcore.h>
@@ -19,8 +20,9 @@ namespace {
 
 class EmbreeTracer final : public RayTracer {
  public:
-  EmbreeTracer(const TriangleMesh& mesh, int threads, double& build_seconds) {
-    const std::string config = "threads=" + std::to_string(threads > 0 ? threads : 0);
+  EmbreeTracer(const TriangleMesh& mesh, int threads, const char* max_isa, double& build_seconds) {
+    const std::string config =
+        "threads=" + std::to_string(threads > 0 ? threads : 0) + ",max_isa=" + max_isa;
     device_ = rtcNewDevice(config.c_str());
     if (!device_) throw RuntimeError("Embree: rtcNewDevice failed");
     scene_ = rtcNewScene(device_);
@@ -113,8 +115,8 @@ class EmbreeTracer final : public RayTracer {
 bool embree_available() { return true; }
 
 std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads,
-                                              double& build_seconds) {
-  return std::make_unique<EmbreeTracer>(mesh, threads, build_seconds);
+                                              const char* max_isa, double& build_seconds) {
+  return std::make_unique<EmbreeTracer>(mesh, threads, max_isa, build_seconds);
 }
 
 }  // namespace rayvec

@@ -28,11 +28,12 @@ class RayTracer {
 // rayvec's accelerator: closest(), closest_stream() for packets, occluded().
 std::unique_ptr<RayTracer> make_accelerator_tracer(const Accelerator& accel);
 
-// Embree 3 with RTC_BUILD_QUALITY_HIGH, `threads` build threads: rtcIntersect1, rtcIntersect16,
+// Embree 3 with RTC_BUILD_QUALITY_HIGH, `threads` build threads, its ISA capped at `max_isa`
+// (Embree's names: "sse2", "avx2", "avx512"; see embree_max_isa): rtcIntersect1, rtcIntersect16,
 // rtcOccluded1. Null when rayvec was built without Embree. build_seconds receives the time of
 // rtcCommitScene.
 std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads,
-                                              double& build_seconds);
+                                              const char* max_isa, double& build_seconds);
 bool embree_available();
 
 }  // namespace rayvec

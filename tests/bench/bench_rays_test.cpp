@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bench/ray_tracer.h"
+#include "kernels/isa.h"
 #include "test_support.h"
 
 namespace rayvec {
@@ -71,6 +72,21 @@ TEST(BenchRays, VsEmbreeRunsWhenBuiltWithEmbreeAndOtherwiseExitsTwo) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"embree\":{\"build_s\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"mismatches\":{\"primary\":0,"), std::string::npos) << r.out;
+}
+
+// The rival runs at rayvec's ISA (Embree's max_isa), so an AVX2 comparison is AVX2 against AVX2.
+TEST(BenchRays, VsEmbreeCapsEmbreeAtRayvecsIsa) {
+  if (!embree_available()) GTEST_SKIP() << "rayvec was built without Embree";
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays_embree_isa"));
+  const std::string base = "bench rays " + obj + " --size 8x8 --repeats 1 --json --vs-embree --isa ";
+  const auto scalar = test::run_cli(base + "scalar");
+  ASSERT_EQ(scalar.status, 0) << scalar.err;
+  EXPECT_NE(scalar.out.find("\"max_isa\":\"sse2\""), std::string::npos) << scalar.out;
+  EXPECT_NE(scalar.out.find("\"mismatches\":{\"primary\":0,"), std::string::npos) << scalar.out;
+  if (!isa_supported(Isa::avx2)) GTEST_SKIP() << "no AVX2 on this CPU: the avx2 half is skipped";
+  const auto avx2 = test::run_cli(base + "avx2");
+  ASSERT_EQ(avx2.status, 0) << avx2.err;
+  EXPECT_NE(avx2.out.find("\"max_isa\":\"avx2\""), std::string::npos) << avx2.out;
 }
 
 }  // namespace
