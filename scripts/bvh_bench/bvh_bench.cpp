@@ -5,7 +5,8 @@
 // It also counts, per ray, wide nodes visited and 16-triangle leaf blocks tested — a load-free
 // measure of tree quality.
 //   bvh_bench MODEL.obj [ROUNDS] VARIANT...
-//   VARIANT = name:key=value,key=value  (keys: block, max_leaf, trav, bins, width, trv=0|1)
+//   VARIANT = name:key=value,key=value  (keys: block, max_leaf, trav, bins, width, trv=0|1,
+//             isa=2 for AVX2 instead of AVX-512)
 // trv=1 traverses with the variant traversal compiled into this harness (variant_avx512.cpp).
 //   bvh_bench MODEL.obj phases [ROUNDS]   build phases (binary SAH, collapse, TriangleSoA fill) at
 //                                         OMP_NUM_THREADS threads: wall and process CPU seconds
@@ -51,6 +52,7 @@ struct Variant {
   std::string name;
   BvhOptions options;
   bool variant_traversal = false;
+  Isa isa = Isa::avx512;
   std::unique_ptr<Bvh> bvh;
   std::vector<double> primary_s, incoherent_s;
   double build_s = 0;
@@ -75,6 +77,7 @@ Variant parse(const std::string& spec) {
     else if (k == "bins") v.options.sah.bins = int(x);
     else if (k == "width") v.options.width = int(x);
     else if (k == "trv") v.variant_traversal = x != 0;
+    else if (k == "isa") v.isa = x == 2 ? Isa::avx2 : Isa::avx512;
     else { std::fprintf(stderr, "unknown key %s\n", k.c_str()); std::exit(2); }
   }
   if (!v.options.leaves_from_kernel) {  // keep the kernel-derived defaults for the other one
@@ -204,7 +207,7 @@ int main(int argc, char** argv) {
   for (int i = first; i < argc; ++i) vs.push_back(parse(argv[i]));
   for (Variant& v : vs) {
     const double t0 = cpu_now();
-    v.bvh = std::make_unique<Bvh>(model.mesh, config, v.options);
+    v.bvh = std::make_unique<Bvh>(model.mesh, TraceConfig{v.isa, config.intersector}, v.options);
     v.build_s = cpu_now() - t0;
   }
   const int side = std::getenv("RV_SIDE") ? std::atoi(std::getenv("RV_SIDE")) : 1024;
@@ -227,7 +230,8 @@ int main(int argc, char** argv) {
   uint64_t sums[2] = {0, 0};
   auto trace = [&](const Variant& v, const RaySet& set) {
     const double t0 = cpu_now();
-    const BvhKernels& tk = bvh_kernels(config.isa, v.bvh->tree().width());
+    const BvhKernels& tk = bvh_kernels(v.isa, v.bvh->tree().width());
+    const TriangleKernels& kernels = triangle_kernels(v.isa, config.intersector);
     for (std::size_t i = 0; i < set.rays.size(); ++i) {
       Hit h;
       if (v.variant_traversal)
