@@ -10,14 +10,14 @@ namespace rayvec {
 BvhWidths bvh_widths(Isa isa) {
   switch (isa) {
     case Isa::avx512: return {{8, 16, 0}, 2};
-    case Isa::avx2: return {{8, 0, 0}, 1};
+    case Isa::avx2: return {{8, 16, 0}, 2};
     case Isa::scalar: break;
   }
   return {{8, 4, 0}, 2};
 }
 
 int default_bvh_width(Isa isa, std::size_t triangles) {
-  return isa == Isa::avx512 && triangles >= kWideNodeTriangles ? 16 : 8;
+  return isa != Isa::scalar && triangles >= kWideNodeTriangles ? 16 : 8;
 }
 
 const BvhKernels& bvh_kernels(Isa isa, int width) {

@@ -36,8 +36,8 @@ struct BvhWidths {
 BvhWidths bvh_widths(Isa isa);
 
 // The node width a BVH over `triangles` triangles gets by default (measured, docs/benchmarks.md,
-// "Blocked triangle rows and 16-wide nodes"): 16 on AVX-512 from kWideNodeTriangles triangles up
-// (deep trees: fewer levels, so fewer dependent node fetches per ray), else 8.
+// "Blocked rows, 16-wide nodes, huge pages"): 16 on AVX-512 and AVX2 from kWideNodeTriangles
+// triangles up (deep trees: fewer levels, so fewer dependent node fetches per ray), else 8.
 inline constexpr std::size_t kWideNodeTriangles = 32768;
 int default_bvh_width(Isa isa, std::size_t triangles);
 

@@ -21,11 +21,14 @@ namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
 constinit const BvhKernels k8{Isa::avx2, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
                               &bvh_closest_packet<BoxLanes8, PacketLanes8>, 8};
+constinit const BvhKernels k16{Isa::avx2, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>,
+                               &bvh_closest_packet<BoxLanes16, PacketLanes8>, 8};
 }  // namespace
 
 const BvhKernels* bvh_kernels(int width) {
   switch (width) {
     case 8: return &k8;
+    case 16: return &k16;
     default: return nullptr;
   }
 }

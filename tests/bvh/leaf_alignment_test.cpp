@@ -70,12 +70,13 @@ TEST(LeafAlignment, PaddingSlotsBecomeZeroAreaSlotsWithoutId) {
   EXPECT_EQ(wide.leaf_count(), leaf_contents(tree).size());
 }
 
-// The default node width (bvh_kernels.h): 16 on AVX-512 for deep trees, 8 otherwise; and a Bvh
-// leaves start on its kernel's width.
-TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesOnlyForLargeMeshesOnAvx512) {
+// The default node width (bvh_kernels.h): 16 on the SIMD ISAs for deep trees, 8 otherwise; and a
+// Bvh's leaves start on its kernel's width.
+TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesOnlyForLargeMeshesOnSimdIsas) {
   EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles), 16);
   EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles - 1), 8);
-  EXPECT_EQ(default_bvh_width(Isa::avx2, 1u << 20), 8);
+  EXPECT_EQ(default_bvh_width(Isa::avx2, kWideNodeTriangles), 16);
+  EXPECT_EQ(default_bvh_width(Isa::avx2, kWideNodeTriangles - 1), 8);
   EXPECT_EQ(default_bvh_width(Isa::scalar, 1u << 20), 8);
   if (!isa_supported(Isa::avx512)) GTEST_SKIP() << "no AVX-512 on this CPU: the built-Bvh half is skipped";
   const TriangleMesh big = test::random_soup(int(kWideNodeTriangles), 0.01f, 3);

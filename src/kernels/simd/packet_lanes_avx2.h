@@ -65,10 +65,19 @@ struct PacketLanes8 {
                          _mm256_cmp_ps(_mm256_andnot_ps(sign, _mm256_load_ps(rows[f])), inf, _CMP_NLT_UQ));
     return lanes & ~unsigned(_mm256_movemask_ps(bad));
   }
-  // The union of the N <= 8 child boxes of a node (bounds rows b[0..5]).
+  // The union of the N <= 8 or 16 child boxes of a node (bounds rows b[0..5]).
   template <int N>
   static RAYVEC_INLINE void union_box(const float (*b)[N], float lo[3], float hi[3]) {
-    static_assert(N <= 8, "one ymm per bounds row");
+    static_assert(N <= 8 || N == 16, "one or two ymm per bounds row");
+    if constexpr (N == 16) {  // two full halves; unused slots (lo +inf, hi −inf) change nothing
+      const __m256 sign = _mm256_set1_ps(-0.0f);
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = hmin(_mm256_min_ps(_mm256_loadu_ps(b[a]), _mm256_loadu_ps(b[a] + 8)));
+        hi[a] = -hmin(_mm256_min_ps(_mm256_xor_ps(_mm256_loadu_ps(b[a + 3]), sign),
+                                    _mm256_xor_ps(_mm256_loadu_ps(b[a + 3] + 8), sign)));
+      }
+      return;
+    }
     const __m256 keep = lane_mask((1u << N) - 1u), inf = _mm256_set1_ps(__builtin_inff());
     const __m256 sign = _mm256_set1_ps(-0.0f);
     for (int a = 0; a < 3; ++a) {  // rows of N < 8 floats are padded by the next row: masked off
