@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
   const Bvh bvh(model.mesh, config);
   const BvhKernels& table = bvh_kernels(config.isa, bvh.tree().width());
   double embree_build = 0;
-  const std::unique_ptr<RayTracer> embree = make_embree_tracer(model.mesh, 1, embree_build);
+  const std::unique_ptr<RayTracer> embree = make_embree_tracer(model.mesh, 1, "avx512", embree_build);
   const int side = std::getenv("RV_SIDE") ? std::atoi(std::getenv("RV_SIDE")) : 1024;
   const BenchCamera cam = frame_mesh(model.mesh, side, side);
   std::vector<uint32_t> start;

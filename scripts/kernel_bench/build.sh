@@ -9,6 +9,9 @@
 # Arguments: triangles, image side of the ray subset, intersector, rays per closest_batch call
 # (0 = one closest call per ray). Prints G tests/s on the thread's CPU time and tests/cycle against
 # a dependent-add loop timed the same way (see kernel_bench.cpp for RV_AB / RV_REPS).
+# The pinned kernels (foundation, prev) index the triangle rows as plain arrays, the layout before
+# 16a0c3d (blocked rows): build them against a librayvec.a of bba758d or earlier. The early and
+# sign variants read rows through slot_offset and work with the current library.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/../../src" && pwd)

@@ -6,15 +6,15 @@ namespace rayvec::avx512 { namespace var {
 #include "pinned_mt.inl"  // git show 96ea2dd:src/kernels/moller_trumbore.inl (build.sh)
 template <class V>
 RAYVEC_INLINE void step_early(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r, MtBest<V>& b) {
-  const V sx = V::load(T.v0x + i) - r.ox, sy = V::load(T.v0y + i) - r.oy, sz = V::load(T.v0z + i) - r.oz;
+  const V sx = V::load(T.v0x + slot_offset(i)) - r.ox, sy = V::load(T.v0y + slot_offset(i)) - r.oy, sz = V::load(T.v0z + slot_offset(i)) - r.oz;
   const V cx = fmsub(sy, r.dz, sz * r.dy), cy = fmsub(sz, r.dx, sx * r.dz), cz = fmsub(sx, r.dy, sy * r.dx);
-  const V ngx = V::load(T.ngx + i), ngy = V::load(T.ngy + i), ngz = V::load(T.ngz + i);
+  const V ngx = V::load(T.ngx + slot_offset(i)), ngy = V::load(T.ngy + slot_offset(i)), ngz = V::load(T.ngz + slot_offset(i));
   const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
   const V sign = sign_bit(det), adet = abs(det), zero = V::broadcast(0.0f);
-  const V un = xor_bits(fmadd(V::load(T.e2x + i), cx, fmadd(V::load(T.e2y + i), cy, V::load(T.e2z + i) * cz)), xor_bits(sign, V::broadcast(-0.0f)));
+  const V un = xor_bits(fmadd(V::load(T.e2x + slot_offset(i)), cx, fmadd(V::load(T.e2y + slot_offset(i)), cy, V::load(T.e2z + slot_offset(i)) * cz)), xor_bits(sign, V::broadcast(-0.0f)));
   auto m = (un >= zero) & (un <= adet);
   if (!any(m)) return;
-  const V vn = xor_bits(fmadd(V::load(T.e1x + i), cx, fmadd(V::load(T.e1y + i), cy, V::load(T.e1z + i) * cz)), sign);
+  const V vn = xor_bits(fmadd(V::load(T.e1x + slot_offset(i)), cx, fmadd(V::load(T.e1y + slot_offset(i)), cy, V::load(T.e1z + slot_offset(i)) * cz)), sign);
   m = m & (vn >= zero) & (un + vn <= adet);
   if (!any(m)) return;
   const V tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);

@@ -17,14 +17,14 @@ template <bool TminZero>
 RAYVEC_INLINE void step(const TriangleArrays& T, uint32_t i, const RayLanes<vfloat>& r, vmaskf active,
                         vfloat neg_lo, MtBest<vfloat>& b) {
   using V = vfloat;
-  const V sx = V::load(T.v0x + i) - r.ox, sy = V::load(T.v0y + i) - r.oy, sz = V::load(T.v0z + i) - r.oz;
+  const V sx = V::load(T.v0x + slot_offset(i)) - r.ox, sy = V::load(T.v0y + slot_offset(i)) - r.oy, sz = V::load(T.v0z + slot_offset(i)) - r.oz;
   const V cx = fmsub(sy, r.dz, sz * r.dy), cy = fmsub(sz, r.dx, sx * r.dz), cz = fmsub(sx, r.dy, sy * r.dx);
-  const V ngx = V::load(T.ngx + i), ngy = V::load(T.ngy + i), ngz = V::load(T.ngz + i);
+  const V ngx = V::load(T.ngx + slot_offset(i)), ngy = V::load(T.ngy + slot_offset(i)), ngz = V::load(T.ngz + slot_offset(i));
   const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
   const V sign = sign_bit(det), adet = abs(det), zero = V::broadcast(0.0f);
-  const V e2x = V::load(T.e2x + i), e2y = V::load(T.e2y + i), e2z = V::load(T.e2z + i);
+  const V e2x = V::load(T.e2x + slot_offset(i)), e2y = V::load(T.e2y + slot_offset(i)), e2z = V::load(T.e2z + slot_offset(i));
   const V un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), sign);  // −u·|det|
-  const V e1x = V::load(T.e1x + i), e1y = V::load(T.e1y + i), e1z = V::load(T.e1z + i);
+  const V e1x = V::load(T.e1x + slot_offset(i)), e1y = V::load(T.e1y + slot_offset(i)), e1z = V::load(T.e1z + slot_offset(i));
   const V a = zero - un;                                                   // u·|det|, never −0
   const V bv = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign) + zero;  // v·|det|
   const V tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign) + zero;  // t·|det|

@@ -1,7 +1,7 @@
-// AVX-512 ray–box test for the wide BVH: one ray against the child boxes of a WideNode<8> (ymm
-// registers, AVX-512VL mask compares) or WideNode<16> (zmm), one child per lane. One of the only
-// files that include <immintrin.h>; included only by *_avx512.cpp units, in namespace rayvec::avx512.
-// The arithmetic and its robustness argument are documented in bvh/bvh_traversal.inl.
+// AVX-512 lane types of the wide-BVH box test (kernels/simd/box_lanes.inl): a ymm of 8 floats
+// with AVX-512VL mask compares (BoxLanes8, WideNode<8>) and a zmm of 16 (BoxLanes16,
+// WideNode<16>), one register per bounds row. One of the only files that include <immintrin.h>;
+// included only by *_avx512.cpp units, in namespace rayvec::avx512.
 #pragma once
 #include <immintrin.h>
 
@@ -13,164 +13,35 @@ namespace rayvec::avx512 {
 #define RAYVEC_INLINE inline __attribute__((always_inline))
 #endif
 
-struct BoxLanes8Ray {
-  __m256 ox, oy, oz, rx, ry, rz;
-  int nx, ny, nz, fx, fy, fz;  // bounds rows of the near and far planes per axis (0..2 lo, 3..5 hi)
+#include "kernels/simd/ymm_ops.inl"
+
+struct Ymm : YmmOps {
+  static RAYVEC_INLINE unsigned le_bits(T a, T b) {
+    return unsigned(_mm256_cmp_ps_mask(a, b, _CMP_LE_OQ));
+  }
 };
 
-// For rays with tmin >= 0: the reciprocals of the near and far planes, already scaled by (1 ∓ eps).
-struct BoxLanes8ForwardRay {
-  __m256 ox, oy, oz, nrx, nry, nrz, frx, fry, frz;
-  int nx, ny, nz, fx, fy, fz;
-};
-
-struct BoxLanes8 {
-  static constexpr int N = 8;
-  using RayData = BoxLanes8Ray;
-  using ForwardRay = BoxLanes8ForwardRay;
-
-  static RAYVEC_INLINE ForwardRay prepare_forward(const float o[3], const float rdir[3], const int near[3],
-                                                  float eps) {
-    const float dn = 1.0f - eps, up = 1.0f + eps;
-    return {_mm256_set1_ps(o[0]), _mm256_set1_ps(o[1]), _mm256_set1_ps(o[2]),
-            _mm256_set1_ps(rdir[0] * dn), _mm256_set1_ps(rdir[1] * dn), _mm256_set1_ps(rdir[2] * dn),
-            _mm256_set1_ps(rdir[0] * up), _mm256_set1_ps(rdir[1] * up), _mm256_set1_ps(rdir[2] * up),
-            near[0], near[1], near[2], near[0] < 3 ? near[0] + 3 : near[0] - 3,
-            near[1] < 3 ? near[1] + 3 : near[1] - 3, near[2] < 3 ? near[2] + 3 : near[2] - 3};
-  }
-
-  // As hits() for a ray with tmin >= 0, the widening done by the scaled reciprocals (see
-  // bvh_traversal.inl): three fewer dependent operations a node.
-  static RAYVEC_INLINE unsigned hits_forward(const float (*b)[8], const ForwardRay& r, float tmin,
-                                             float tmax, float* dist) {
-    const __m256 tnx = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.nx]), r.ox), r.nrx);
-    const __m256 tny = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.ny]), r.oy), r.nry);
-    const __m256 tnz = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.nz]), r.oz), r.nrz);
-    const __m256 tfx = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fx]), r.ox), r.frx);
-    const __m256 tfy = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fy]), r.oy), r.fry);
-    const __m256 tfz = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fz]), r.oz), r.frz);
-    // the NaN slab (0·inf) is the first operand of each max/min, so it is skipped
-    const __m256 lo = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, _mm256_set1_ps(tmin))));
-    const __m256 hi = _mm256_min_ps(tfz, _mm256_min_ps(tfy, _mm256_min_ps(tfx, _mm256_set1_ps(tmax))));
-    _mm256_storeu_ps(dist, lo);
-    return unsigned(_mm256_cmp_ps_mask(lo, hi, _CMP_LE_OQ));
-  }
-
-  static RAYVEC_INLINE RayData prepare(const float o[3], const float rdir[3], const int near[3]) {
-    return {_mm256_set1_ps(o[0]), _mm256_set1_ps(o[1]), _mm256_set1_ps(o[2]),
-            _mm256_set1_ps(rdir[0]), _mm256_set1_ps(rdir[1]), _mm256_set1_ps(rdir[2]),
-            near[0], near[1], near[2], near[0] < 3 ? near[0] + 3 : near[0] - 3,
-            near[1] < 3 ? near[1] + 3 : near[1] - 3, near[2] < 3 ? near[2] + 3 : near[2] - 3};
-  }
-
-  // Bit k set when child k's box overlaps [tmin, tmax]; dist[k] = its entry distance.
-  static RAYVEC_INLINE unsigned hits(const float (*b)[8], const RayData& r, float tmin, float tmax,
-                                     float eps, float* dist) {
-    const __m256 tnx = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.nx]), r.ox), r.rx);
-    const __m256 tny = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.ny]), r.oy), r.ry);
-    const __m256 tnz = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.nz]), r.oz), r.rz);
-    const __m256 tfx = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fx]), r.ox), r.rx);
-    const __m256 tfy = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fy]), r.oy), r.ry);
-    const __m256 tfz = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[r.fz]), r.oz), r.rz);
-    // max/min return the second operand when the first is NaN (0·inf: origin on a plane of an
-    // axis the ray is parallel to), so such a slab is skipped
-    __m256 tn = _mm256_max_ps(tnx, _mm256_set1_ps(-__builtin_inff()));
-    tn = _mm256_max_ps(tny, tn);
-    tn = _mm256_max_ps(tnz, tn);
-    __m256 tf = _mm256_min_ps(tfx, _mm256_set1_ps(__builtin_inff()));
-    tf = _mm256_min_ps(tfy, tf);
-    tf = _mm256_min_ps(tfz, tf);
-    // widen by |t|·eps; an infinite end becomes NaN, which misses below (the box is unreachable)
-    const __m256 e = _mm256_set1_ps(eps);
-    tn = _mm256_fnmadd_ps(abs_ps(tn), e, tn);
-    tf = _mm256_fmadd_ps(abs_ps(tf), e, tf);
-    const __m256 lo = _mm256_max_ps(_mm256_set1_ps(tmin), tn);  // a NaN second operand stays NaN
-    const __m256 hi = _mm256_min_ps(_mm256_set1_ps(tmax), tf);
-    _mm256_storeu_ps(dist, lo);
-    return unsigned(_mm256_cmp_ps_mask(lo, hi, _CMP_LE_OQ));
-  }
-  static RAYVEC_INLINE __m256 abs_ps(__m256 a) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a); }
-};
-
-struct BoxLanes16Ray {
-  __m512 ox, oy, oz, rx, ry, rz;
-  int nx, ny, nz, fx, fy, fz;  // bounds rows of the near and far planes per axis (0..2 lo, 3..5 hi)
-};
-
-// For rays with tmin >= 0: the reciprocals of the near and far planes, already scaled by (1 ∓ eps).
-struct BoxLanes16ForwardRay {
-  __m512 ox, oy, oz, nrx, nry, nrz, frx, fry, frz;
-  int nx, ny, nz, fx, fy, fz;
-};
-
-struct BoxLanes16 {
-  static constexpr int N = 16;
-  using RayData = BoxLanes16Ray;
-  using ForwardRay = BoxLanes16ForwardRay;
-
-  static RAYVEC_INLINE ForwardRay prepare_forward(const float o[3], const float rdir[3], const int near[3],
-                                                  float eps) {
-    const float dn = 1.0f - eps, up = 1.0f + eps;
-    return {_mm512_set1_ps(o[0]), _mm512_set1_ps(o[1]), _mm512_set1_ps(o[2]),
-            _mm512_set1_ps(rdir[0] * dn), _mm512_set1_ps(rdir[1] * dn), _mm512_set1_ps(rdir[2] * dn),
-            _mm512_set1_ps(rdir[0] * up), _mm512_set1_ps(rdir[1] * up), _mm512_set1_ps(rdir[2] * up),
-            near[0], near[1], near[2], near[0] < 3 ? near[0] + 3 : near[0] - 3,
-            near[1] < 3 ? near[1] + 3 : near[1] - 3, near[2] < 3 ? near[2] + 3 : near[2] - 3};
-  }
-
-  // As hits() for a ray with tmin >= 0, the widening done by the scaled reciprocals (see
-  // bvh_traversal.inl): three fewer dependent operations a node.
-  static RAYVEC_INLINE unsigned hits_forward(const float (*b)[16], const ForwardRay& r, float tmin,
-                                             float tmax, float* dist) {
-    const __m512 tnx = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.nx]), r.ox), r.nrx);
-    const __m512 tny = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.ny]), r.oy), r.nry);
-    const __m512 tnz = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.nz]), r.oz), r.nrz);
-    const __m512 tfx = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.fx]), r.ox), r.frx);
-    const __m512 tfy = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.fy]), r.oy), r.fry);
-    const __m512 tfz = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.fz]), r.oz), r.frz);
-    // the NaN slab (0·inf) is the first operand of each max/min, so it is skipped
-    const __m512 lo = _mm512_max_ps(tnz, _mm512_max_ps(tny, _mm512_max_ps(tnx, _mm512_set1_ps(tmin))));
-    const __m512 hi = _mm512_min_ps(tfz, _mm512_min_ps(tfy, _mm512_min_ps(tfx, _mm512_set1_ps(tmax))));
-    _mm512_storeu_ps(dist, lo);
-    return unsigned(_mm512_cmp_ps_mask(lo, hi, _CMP_LE_OQ));
-  }
-
-  static RAYVEC_INLINE RayData prepare(const float o[3], const float rdir[3], const int near[3]) {
-    return {_mm512_set1_ps(o[0]), _mm512_set1_ps(o[1]), _mm512_set1_ps(o[2]),
-            _mm512_set1_ps(rdir[0]), _mm512_set1_ps(rdir[1]), _mm512_set1_ps(rdir[2]),
-            near[0], near[1], near[2], near[0] < 3 ? near[0] + 3 : near[0] - 3,
-            near[1] < 3 ? near[1] + 3 : near[1] - 3, near[2] < 3 ? near[2] + 3 : near[2] - 3};
-  }
-
-  // Bit k set when child k's box overlaps [tmin, tmax]; dist[k] = its entry distance.
-  static RAYVEC_INLINE unsigned hits(const float (*b)[16], const RayData& r, float tmin, float tmax,
-                                     float eps, float* dist) {
-    const __m512 tnx = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.nx]), r.ox), r.rx);
-    const __m512 tny = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.ny]), r.oy), r.ry);
-    const __m512 tnz = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.nz]), r.oz), r.rz);
-    const __m512 tfx = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.fx]), r.ox), r.rx);
-    const __m512 tfy = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.fy]), r.oy), r.ry);
-    const __m512 tfz = _mm512_mul_ps(_mm512_sub_ps(_mm512_load_ps(b[r.fz]), r.oz), r.rz);
-    // max/min return the second operand when the first is NaN (0·inf: origin on a plane of an
-    // axis the ray is parallel to), so such a slab is skipped
-    __m512 tn = _mm512_max_ps(tnx, _mm512_set1_ps(-__builtin_inff()));
-    tn = _mm512_max_ps(tny, tn);
-    tn = _mm512_max_ps(tnz, tn);
-    __m512 tf = _mm512_min_ps(tfx, _mm512_set1_ps(__builtin_inff()));
-    tf = _mm512_min_ps(tfy, tf);
-    tf = _mm512_min_ps(tfz, tf);
-    // widen by |t|·eps; an infinite end becomes NaN, which misses below (the box is unreachable)
-    const __m512 e = _mm512_set1_ps(eps);
-    tn = _mm512_fnmadd_ps(abs_ps(tn), e, tn);
-    tf = _mm512_fmadd_ps(abs_ps(tf), e, tf);
-    const __m512 lo = _mm512_max_ps(_mm512_set1_ps(tmin), tn);  // a NaN second operand stays NaN
-    const __m512 hi = _mm512_min_ps(_mm512_set1_ps(tmax), tf);
-    _mm512_storeu_ps(dist, lo);
-    return unsigned(_mm512_cmp_ps_mask(lo, hi, _CMP_LE_OQ));
-  }
-  static RAYVEC_INLINE __m512 abs_ps(__m512 a) {
+struct Zmm {
+  using T = __m512;
+  static constexpr int W = 16;
+  static RAYVEC_INLINE T set1(float x) { return _mm512_set1_ps(x); }
+  static RAYVEC_INLINE T load(const float* p) { return _mm512_load_ps(p); }
+  static RAYVEC_INLINE void storeu(float* p, T a) { _mm512_storeu_ps(p, a); }
+  static RAYVEC_INLINE T sub(T a, T b) { return _mm512_sub_ps(a, b); }
+  static RAYVEC_INLINE T mul(T a, T b) { return _mm512_mul_ps(a, b); }
+  static RAYVEC_INLINE T max(T a, T b) { return _mm512_max_ps(a, b); }
+  static RAYVEC_INLINE T min(T a, T b) { return _mm512_min_ps(a, b); }
+  static RAYVEC_INLINE T fmadd(T a, T b, T c) { return _mm512_fmadd_ps(a, b, c); }
+  static RAYVEC_INLINE T fnmadd(T a, T b, T c) { return _mm512_fnmadd_ps(a, b, c); }
+  static RAYVEC_INLINE T abs(T a) {
     return _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32(INT32_MAX)));
   }
+  static RAYVEC_INLINE unsigned le_bits(T a, T b) { return unsigned(_mm512_cmp_ps_mask(a, b, _CMP_LE_OQ)); }
 };
+
+#include "kernels/simd/box_lanes.inl"
+
+using BoxLanes8 = BoxLanesOne<Ymm>;
+using BoxLanes16 = BoxLanesOne<Zmm>;
 
 }  // namespace rayvec::avx512

@@ -117,8 +117,8 @@ struct PacketLanes16 {
     tf = _mm512_min_ps(tfy, tf);
     tf = _mm512_min_ps(tfz, tf);
     const __m512 e = _mm512_set1_ps(eps);
-    tn = _mm512_fnmadd_ps(BoxLanes16::abs_ps(tn), e, tn);
-    tf = _mm512_fmadd_ps(BoxLanes16::abs_ps(tf), e, tf);
+    tn = _mm512_fnmadd_ps(Zmm::abs(tn), e, tn);
+    tf = _mm512_fmadd_ps(Zmm::abs(tf), e, tf);
     const __m512 lo = _mm512_max_ps(tmin, tn);
     const __m512 hi = _mm512_min_ps(tmax, tf);
     _mm512_storeu_ps(tn_out, lo);
@@ -165,7 +165,7 @@ struct PacketLanes16Forward {
   // p moved away from zero-crossing toward `dir` (+1 up, −1 down) by more than its rounding
   // error: max(|p|·2^-22, 2^-149) is at least two ulps of a normal p and one subnormal step.
   static RAYVEC_INLINE __m512 outward(__m512 p, __m512 dir) {
-    const __m512 step = _mm512_max_ps(_mm512_mul_ps(BoxLanes16::abs_ps(p), _mm512_set1_ps(0x1p-22f)),
+    const __m512 step = _mm512_max_ps(_mm512_mul_ps(Zmm::abs(p), _mm512_set1_ps(0x1p-22f)),
                                       _mm512_set1_ps(0x1p-149f));
     return _mm512_fmadd_ps(step, dir, p);
   }
