@@ -10,7 +10,7 @@
 // trv=1 traverses with the variant traversal compiled into this harness (variant_avx512.cpp).
 //   bvh_bench MODEL.obj phases [ROUNDS]   build phases (binary SAH, collapse, TriangleSoA fill) at
 //                                         OMP_NUM_THREADS threads: wall and process CPU seconds
-// RV_SIDE=N traces N×N primary rays instead of 1024×1024.
+// RV_SIDE=N traces N×N primary rays instead of 1024×1024; RV_ROUNDS=1 prints every round's times.
 #include <time.h>
 
 #include <algorithm>
@@ -253,6 +253,8 @@ int main(int argc, char** argv) {
       if (r > 0) {  // round 0 warms up
         v.primary_s.push_back(p);
         v.incoherent_s.push_back(q);
+        if (std::getenv("RV_ROUNDS"))  // every round's times, to see the VM's phases
+          std::printf("round %d %s primary %.4f incoherent %.4f\n", r, v.name.c_str(), p, q);
       }
     }
   }
