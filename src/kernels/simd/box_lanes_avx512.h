@@ -1,6 +1,6 @@
-// AVX-512 lane types of the wide-BVH box test (kernels/simd/box_lanes.inl): a ymm of 8 floats
-// with AVX-512VL mask compares (BoxLanes8, WideNode<8>) and a zmm of 16 (BoxLanes16,
-// WideNode<16>), one register per bounds row. One of the only files that include <immintrin.h>;
+// AVX-512 lane types of the wide-BVH box tests (kernels/simd/box_lanes.inl, packet_lanes.inl): a
+// ymm of 8 floats with AVX-512VL mask compares (BoxLanes8, WideNode<8>) and a zmm of 16
+// (BoxLanes16, WideNode<16>; the 16-ray packets), one register per bounds row. One of the only files that include <immintrin.h>;
 // included only by *_avx512.cpp units, in namespace rayvec::avx512.
 #pragma once
 #include <immintrin.h>
@@ -37,6 +37,14 @@ struct Zmm {
     return _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32(INT32_MAX)));
   }
   static RAYVEC_INLINE unsigned le_bits(T a, T b) { return unsigned(_mm512_cmp_ps_mask(a, b, _CMP_LE_OQ)); }
+  // packet lanes (packet_lanes.inl): lane masks are __mmask16
+  static RAYVEC_INLINE T loadu(const float* p) { return _mm512_loadu_ps(p); }
+  static RAYVEC_INLINE T fmsub(T a, T b, T c) { return _mm512_fmsub_ps(a, b, c); }
+  using Signs = __mmask16;
+  static RAYVEC_INLINE Signs signs_of(T r) { return _mm512_movepi32_mask(_mm512_castps_si512(r)); }
+  static RAYVEC_INLINE Signs signs_from_bits(unsigned lanes) { return __mmask16(lanes); }
+  static RAYVEC_INLINE T blend(Signs m, T a, T b) { return _mm512_mask_blend_ps(m, a, b); }
+  static RAYVEC_INLINE float max_lanes(T v, unsigned lanes) { return _mm512_mask_reduce_max_ps(__mmask16(lanes), v); }
 };
 
 #include "kernels/simd/box_lanes.inl"
