@@ -187,8 +187,9 @@ void register_bench_rays_command(Command& bench) {
       .option("--size", o.size, "image size WxH of the primary rays (default 1024x1024)")
       .flag("--json", o.json, "print one JSON object instead of the table")
       .flag("--vs-embree", o.vs_embree,
-            "also trace the same rays with Embree 3 (RTC_BUILD_QUALITY_HIGH) and print ratios and "
-            "id mismatches; exit status 2 when rayvec was built without Embree")
+            "also trace the same rays with Embree 3 (RTC_BUILD_QUALITY_HIGH, its ISA capped at "
+            "rayvec's: --isa avx2 compares AVX2 with AVX2) and print ratios and id mismatches; "
+            "exit status 2 when rayvec was built without Embree")
       .option("--repeats", o.repeats, "timed runs per ray set after one warm-up; the median is "
                                       "reported (default 5)")
       .option("--bvh-width", o.width, "children per BVH node: 4, 8 or 16; 0 = the default (AVX-512 and AVX2: 16 from 32768 triangles up, else 8)")
