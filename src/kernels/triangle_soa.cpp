@@ -11,12 +11,8 @@
 namespace rayvec {
 namespace {
 
-
 constexpr std::int64_t kParallelFill = 16384;  // fewer slots: fill on the calling thread
 
-// Uninitialized (LargeBuffer): the fill below writes every slot, in parallel, so the pages are
-// first touched by the threads that fill them (a serial memset was a third of the fill's time on
-// 1M triangles).
 }  // namespace
 
 TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order) {
@@ -27,6 +23,8 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
     throw std::length_error("too many triangles for TriangleSoA (at most " + std::to_string(kMaxSlots) + ")");
   count_ = static_cast<uint32_t>(n);
   padded_ = (count_ + kBlock - 1) / kBlock * kBlock + kBlock;  // one block of slack
+  // uninitialized: the fill below writes every slot, in parallel, so the pages are first touched
+  // by the threads that fill them (a serial memset was a third of the fill's time on 1M triangles)
   blocks_ = allocate_large_buffer(std::size_t(padded_) * kSlotRows * 4);
 
   // row k of every block starts kBlock·k 4-byte values into the block; hot rows (v0, ng, e2, e1:

@@ -5,12 +5,13 @@
 //   normal ng = e2 × e1); v1 and v2 are kept too so double-precision and watertight kernels work
 //   from the exact input vertices;
 // - the rows are blocked (AoSoA): slots come in blocks of kBlock = 16, and a block stores all 19
-//   rows of its 16 slots one after the other (64 bytes a row): the 12 rows of the float `mt` kernel
-//   first, then the triangle ids (read for every hit: beside the rows, not in a separate array
-//   whose line is one more cache miss per hit leaf), then v1 and v2. A BVH leaf is then one contiguous run of memory instead of a piece of each of 12 arrays
-//   megabytes apart (fewer cache lines and pages per leaf; docs/benchmarks.md, "Blocked triangle
-//   rows"). Slot i of row pointer p is p[slot_offset(i)]; a SIMD step loads W lanes from a slot
-//   that is a multiple of W (W divides kBlock), so it never crosses a block.
+//   rows of its 16 slots one after the other (64 bytes a row): the 12 rows of the float `mt`
+//   kernel first, then the triangle ids (read for every hit: beside the rows, not in a separate
+//   array whose line is one more cache miss per hit leaf), then v1 and v2. A BVH leaf is then one
+//   contiguous run of memory instead of a piece of each of 12 arrays megabytes apart
+//   (docs/benchmarks.md, "Blocked rows, 16-wide nodes, huge pages"). Slot i of row pointer p is
+//   p[slot_offset(i)]; a SIMD step loads W lanes from a slot that is a multiple of W (W divides
+//   kBlock), so it never crosses a block.
 // Rows are 64-byte aligned; the slots are padded with zero-area triangles (id −1) to a multiple of
 // kBlock plus one block of slack, so a kernel may always load a full register at any aligned slot
 // below count.
@@ -52,8 +53,10 @@ struct TriangleArrays {
   // ng = e2 × e1, the unnormalized geometric normal (Embree's orientation), so the float `mt` kernel
   // gets det = d · ng and t·det = (v0 − o) · ng without recomputing a cross product per ray.
   const float *ngx, *ngy, *ngz;
-  const int32_t* id;  // triangle id per slot (−1: padding); ids inside any range a kernel is given must increase
-  uint32_t count;     // real triangles (slots [count, padded) are zero-area padding)
+  // triangle id per slot (−1: padding); the ids of the triangles in any range a kernel is given
+  // must increase
+  const int32_t* id;
+  uint32_t count;  // slots in use (BVH padding slots included); [count, padded) is zero-area padding
 };
 
 class TriangleSoA {
