@@ -192,7 +192,9 @@ void register_bench_rays_command(Command& bench) {
             "exit status 2 when rayvec was built without Embree")
       .option("--repeats", o.repeats, "timed runs per ray set after one warm-up; the median is "
                                       "reported (default 5)")
-      .option("--bvh-width", o.width, "children per BVH node: 4, 8 or 16; 0 = the default (AVX-512 and AVX2: 16 from 32768 triangles up, else 8)")
+      .option("--bvh-width", o.width,
+              "children per BVH node: 4, 8 or 16; 0 = the default (AVX-512 and AVX2: 16 from 32768 "
+              "triangles up, else 8)")
       .option("--max-leaf", o.max_leaf, "tuning: most triangles per BVH leaf (0 = default)")
       .option("--leaf-block", o.leaf_block,
               "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)");

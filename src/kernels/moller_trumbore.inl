@@ -73,8 +73,9 @@ template <class V>
 RAYVEC_INLINE LaneHits<V> test_paper(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
                                      typename V::Mask active, V tlimit) {
   LaneHits<V> out;
-  const V e1x = V::load(T.e1x + slot_offset(i)), e1y = V::load(T.e1y + slot_offset(i)), e1z = V::load(T.e1z + slot_offset(i));
-  const V e2x = V::load(T.e2x + slot_offset(i)), e2y = V::load(T.e2y + slot_offset(i)), e2z = V::load(T.e2z + slot_offset(i));
+  const uint32_t k = slot_offset(i);  // the step's lanes in each row (blocked rows)
+  const V e1x = V::load(T.e1x + k), e1y = V::load(T.e1y + k), e1z = V::load(T.e1z + k);
+  const V e2x = V::load(T.e2x + k), e2y = V::load(T.e2y + k), e2z = V::load(T.e2z + k);
   // h = d × e2, a = e1 · h
   const V hx = r.dy * e2z - r.dz * e2y, hy = r.dz * e2x - r.dx * e2z, hz = r.dx * e2y - r.dy * e2x;
   const V a = e1x * hx + e1y * hy + e1z * hz;
@@ -82,7 +83,7 @@ RAYVEC_INLINE LaneHits<V> test_paper(const TriangleArrays& T, uint32_t i, const 
   if (!any(out.mask)) return out;
   const V f = V::broadcast(1.0f) / a;
   // u
-  const V sx = r.ox - V::load(T.v0x + slot_offset(i)), sy = r.oy - V::load(T.v0y + slot_offset(i)), sz = r.oz - V::load(T.v0z + slot_offset(i));
+  const V sx = r.ox - V::load(T.v0x + k), sy = r.oy - V::load(T.v0y + k), sz = r.oz - V::load(T.v0z + k);
   out.u = f * (sx * hx + sy * hy + sz * hz);
   out.mask = out.mask & (out.u >= V::broadcast(0.0f)) & (out.u <= V::broadcast(1.0f));
   if (!any(out.mask)) return out;
@@ -103,14 +104,15 @@ RAYVEC_INLINE LaneHits<V> test_mt(const TriangleArrays& T, uint32_t i, const Ray
                                   typename V::Mask active, V tlimit) {
   using S = typename V::Scalar;
   LaneHits<V> out;
-  const V v0x = V::load(T.v0x + slot_offset(i)), v0y = V::load(T.v0y + slot_offset(i)), v0z = V::load(T.v0z + slot_offset(i));
+  const uint32_t k = slot_offset(i);  // the step's lanes in each row (blocked rows)
+  const V v0x = V::load(T.v0x + k), v0y = V::load(T.v0y + k), v0z = V::load(T.v0z + k);
   V e1x, e1y, e1z, e2x, e2y, e2z;
   if constexpr (sizeof(S) == 8) {  // double: edges from the exact vertices
-    e1x = V::load(T.v1x + slot_offset(i)) - v0x; e1y = V::load(T.v1y + slot_offset(i)) - v0y; e1z = V::load(T.v1z + slot_offset(i)) - v0z;
-    e2x = V::load(T.v2x + slot_offset(i)) - v0x; e2y = V::load(T.v2y + slot_offset(i)) - v0y; e2z = V::load(T.v2z + slot_offset(i)) - v0z;
+    e1x = V::load(T.v1x + k) - v0x; e1y = V::load(T.v1y + k) - v0y; e1z = V::load(T.v1z + k) - v0z;
+    e2x = V::load(T.v2x + k) - v0x; e2y = V::load(T.v2y + k) - v0y; e2z = V::load(T.v2z + k) - v0z;
   } else {
-    e1x = V::load(T.e1x + slot_offset(i)); e1y = V::load(T.e1y + slot_offset(i)); e1z = V::load(T.e1z + slot_offset(i));
-    e2x = V::load(T.e2x + slot_offset(i)); e2y = V::load(T.e2y + slot_offset(i)); e2z = V::load(T.e2z + slot_offset(i));
+    e1x = V::load(T.e1x + k); e1y = V::load(T.e1y + k); e1z = V::load(T.e1z + k);
+    e2x = V::load(T.e2x + k); e2y = V::load(T.e2y + k); e2z = V::load(T.e2z + k);
   }
   // h = d × e2, det = e1 · h
   const V hx = fmsub(r.dy, e2z, r.dz * e2y);
@@ -177,7 +179,8 @@ void closest_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const R
   for (int k = 0; k < W; ++k) {
     if (!(ts[k] < initial)) continue;
     if (k_best < 0 || ts[k] < ts[k_best] ||
-        (ts[k] == ts[k_best] && T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
+        (ts[k] == ts[k_best] &&
+         T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
       k_best = k;
   }
   if (k_best < 0) return;
@@ -199,7 +202,8 @@ bool occluded_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const 
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
-      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))])) return true;
+      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))]))
+        return true;
   }
   return false;
 }
@@ -364,7 +368,8 @@ RAYVEC_INLINE void mt_finish(const TriangleArrays& T, const MtBest<V>& b, float 
   for (int k = 0; k < W; ++k) {
     if (!(ts[k] < initial)) continue;
     if (k_best < 0 || ts[k] < ts[k_best] ||
-        (ts[k] == ts[k_best] && T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
+        (ts[k] == ts[k_best] &&
+         T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
       k_best = k;
   }
   if (k_best < 0) return;
@@ -459,7 +464,8 @@ bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, co
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
-      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))])) return true;
+      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))]))
+        return true;
   }
   return false;
 }

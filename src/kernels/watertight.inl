@@ -118,15 +118,16 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
                                           uint32_t i, typename V::Mask active, V tlimit) {
   using S = typename V::Scalar;
   LaneHits<V> out;
+  const uint32_t k = slot_offset(i);  // the step's lanes in each row (blocked rows)
   // translate to the ray origin (exact vertices), z stays unsheared until needed
-  const V az = V::load(r.az + slot_offset(i)) - r.oz, bz = V::load(r.bz + slot_offset(i)) - r.oz, cz = V::load(r.cz + slot_offset(i)) - r.oz;
+  const V az = V::load(r.az + k) - r.oz, bz = V::load(r.bz + k) - r.oz, cz = V::load(r.cz + k) - r.oz;
   // shear into ray space (separate multiply and subtract: the same rounding on every ISA)
-  const V ax = (V::load(r.ax + slot_offset(i)) - r.ox) - mul_rounded(r.sx, az);
-  const V ay = (V::load(r.ay + slot_offset(i)) - r.oy) - mul_rounded(r.sy, az);
-  const V bx = (V::load(r.bx + slot_offset(i)) - r.ox) - mul_rounded(r.sx, bz);
-  const V by = (V::load(r.by + slot_offset(i)) - r.oy) - mul_rounded(r.sy, bz);
-  const V cx = (V::load(r.cx + slot_offset(i)) - r.ox) - mul_rounded(r.sx, cz);
-  const V cy = (V::load(r.cy + slot_offset(i)) - r.oy) - mul_rounded(r.sy, cz);
+  const V ax = (V::load(r.ax + k) - r.ox) - mul_rounded(r.sx, az);
+  const V ay = (V::load(r.ay + k) - r.oy) - mul_rounded(r.sy, az);
+  const V bx = (V::load(r.bx + k) - r.ox) - mul_rounded(r.sx, bz);
+  const V by = (V::load(r.by + k) - r.oy) - mul_rounded(r.sy, bz);
+  const V cx = (V::load(r.cx + k) - r.ox) - mul_rounded(r.sx, cz);
+  const V cy = (V::load(r.cy + k) - r.oy) - mul_rounded(r.sy, cz);
   // 2D edge functions (no FMA: a shared edge must give the exact negation in the neighbour)
   V u = mul_rounded(cx, by) - mul_rounded(cy, bx);
   V v = mul_rounded(ax, cy) - mul_rounded(ay, cx);
@@ -209,7 +210,8 @@ void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, c
   for (int k = 0; k < W; ++k) {
     if (!(ts[k] < initial)) continue;
     if (k_best < 0 || ts[k] < ts[k_best] ||
-        (ts[k] == ts[k_best] && T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
+        (ts[k] == ts[k_best] &&
+         T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
       k_best = k;
   }
   if (k_best < 0) return;
@@ -231,7 +233,8 @@ bool watertight_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, 
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
-      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))])) return true;
+      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))]))
+        return true;
   }
   return false;
 }

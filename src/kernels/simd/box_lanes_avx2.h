@@ -1,7 +1,7 @@
-// AVX2 lane type of the wide-BVH box tests (kernels/simd/box_lanes.inl, packet_lanes.inl): one
-// ymm of 8 floats, the comparison read with movemask, lane masks as sign bits. BoxLanes8 tests a WideNode<8> (one ymm per bounds row),
-// BoxLanes16 a WideNode<16> (two). One of the only files that include <immintrin.h>; included only
-// by *_avx2.cpp units, in namespace rayvec::avx2.
+// AVX2 lane type of the wide-BVH box tests (kernels/simd/box_lanes.inl, packet_lanes.inl): one ymm
+// of 8 floats, the comparison read with movemask, lane masks as sign bits. BoxLanes8 tests a
+// WideNode<8> (one ymm per bounds row), BoxLanes16 a WideNode<16> (two). One of the only files that
+// include <immintrin.h>; included only by *_avx2.cpp units, in namespace rayvec::avx2.
 #pragma once
 #include <immintrin.h>
 

@@ -1,7 +1,8 @@
 // AVX-512 lane types of the wide-BVH box tests (kernels/simd/box_lanes.inl, packet_lanes.inl): a
 // ymm of 8 floats with AVX-512VL mask compares (BoxLanes8, WideNode<8>) and a zmm of 16
-// (BoxLanes16, WideNode<16>; the 16-ray packets), one register per bounds row. One of the only files that include <immintrin.h>;
-// included only by *_avx512.cpp units, in namespace rayvec::avx512.
+// (BoxLanes16, WideNode<16>; the 16-ray packets), one register per bounds row. One of the only
+// files that include <immintrin.h>; included only by *_avx512.cpp units, in namespace
+// rayvec::avx512.
 #pragma once
 #include <immintrin.h>
 
@@ -44,7 +45,9 @@ struct Zmm {
   static RAYVEC_INLINE Signs signs_of(T r) { return _mm512_movepi32_mask(_mm512_castps_si512(r)); }
   static RAYVEC_INLINE Signs signs_from_bits(unsigned lanes) { return __mmask16(lanes); }
   static RAYVEC_INLINE T blend(Signs m, T a, T b) { return _mm512_mask_blend_ps(m, a, b); }
-  static RAYVEC_INLINE float max_lanes(T v, unsigned lanes) { return _mm512_mask_reduce_max_ps(__mmask16(lanes), v); }
+  static RAYVEC_INLINE float max_lanes(T v, unsigned lanes) {
+    return _mm512_mask_reduce_max_ps(__mmask16(lanes), v);
+  }
 };
 
 #include "kernels/simd/box_lanes.inl"

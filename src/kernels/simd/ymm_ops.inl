@@ -1,6 +1,7 @@
 // The lane operations of one ymm register of 8 floats that AVX2 and AVX-512 share, for the lane
-// types of box_lanes.inl and packet_lanes.inl; each ISA header adds its own comparison (movemask or a mask compare)
-// and includes this inside its namespace (rayvec::avx2 or rayvec::avx512), after <immintrin.h>.
+// types of box_lanes.inl and packet_lanes.inl; each ISA header adds its own comparison (movemask or
+// a mask compare) and includes this inside its namespace (rayvec::avx2 or rayvec::avx512), after
+// <immintrin.h>.
 struct YmmOps {
   using T = __m256;
   static constexpr int W = 8;
