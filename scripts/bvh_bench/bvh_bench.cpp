@@ -1,5 +1,5 @@
 // BVH experiment harness (docs/benchmarks.md, "BVH quality and parallel build"): builds several BVH
-// variants of one mesh in one process and times the bench's primary and incoherent single rays
+// variants of one mesh in one process and times the bench's primary, incoherent and shadow single rays
 // through each, interleaved round by round on the thread's CPU-time clock, so that the load of other
 // processes hits every variant alike; prints the median per variant and its ratio to the first.
 // It also counts, per ray, wide nodes visited and 16-triangle leaf blocks tested — a load-free
@@ -54,7 +54,7 @@ struct Variant {
   bool variant_traversal = false;
   Isa isa = Isa::avx512;
   std::unique_ptr<Bvh> bvh;
-  std::vector<double> primary_s, incoherent_s;
+  std::vector<double> primary_s, incoherent_s, shadow_s;
   double build_s = 0;
 };
 
@@ -216,6 +216,7 @@ int main(int argc, char** argv) {
   std::vector<Hit> hits(primary.rays.size());
   for (std::size_t i = 0; i < hits.size(); ++i) hits[i] = vs[0].bvh->closest(primary.rays[i]);
   const RaySet incoherent = incoherent_rays(cam, model.mesh, primary, hits);
+  const RaySet shadow = shadow_rays(cam, primary, hits);
   if (std::getenv("RV_PRIMARY_MISSES")) {  // keep only the primary rays that miss (1) or hit (2)
     const bool keep_hits = std::atoi(std::getenv("RV_PRIMARY_MISSES")) == 2;
     RaySet kept;
@@ -227,7 +228,17 @@ int main(int argc, char** argv) {
     const_cast<RaySet&>(primary) = kept;
   }
   std::vector<Hit> out(primary.rays.size());
-  uint64_t sums[2] = {0, 0};
+  std::vector<uint8_t> occluded(shadow.rays.size());
+  uint64_t sums[3] = {0, 0, 0};
+  auto trace_shadow = [&](const Variant& v) {
+    const double t0 = cpu_now();
+    const BvhKernels& tk = bvh_kernels(v.isa, v.bvh->tree().width());
+    const TriangleKernels& kernels = triangle_kernels(v.isa, config.intersector);
+    for (std::size_t i = 0; i < shadow.rays.size(); ++i)
+      occluded[i] = tk.occluded(v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels, shadow.rays[i],
+                                nullptr);
+    return cpu_now() - t0;
+  };
   auto trace = [&](const Variant& v, const RaySet& set) {
     const double t0 = cpu_now();
     const BvhKernels& tk = bvh_kernels(v.isa, v.bvh->tree().width());
@@ -250,20 +261,24 @@ int main(int argc, char** argv) {
       const double q = trace(v, incoherent);
       if (r == 0 && &v == &vs[0]) sums[1] = hit_checksum(incoherent, out);
       else if (hit_checksum(incoherent, out) != sums[1]) std::printf("%s: incoherent checksum differs\n", v.name.c_str());
+      const double s = trace_shadow(v);
+      if (r == 0 && &v == &vs[0]) sums[2] = occluded_checksum(shadow, occluded);
+      else if (occluded_checksum(shadow, occluded) != sums[2]) std::printf("%s: shadow checksum differs\n", v.name.c_str());
       if (r > 0) {  // round 0 warms up
         v.primary_s.push_back(p);
         v.incoherent_s.push_back(q);
+        v.shadow_s.push_back(s);
         if (std::getenv("RV_ROUNDS"))  // every round's times, to see the VM's phases
-          std::printf("round %d %s primary %.4f incoherent %.4f\n", r, v.name.c_str(), p, q);
+          std::printf("round %d %s primary %.4f incoherent %.4f shadow %.4f\n", r, v.name.c_str(), p, q, s);
       }
     }
   }
-  std::printf("%zu triangles, %zu primary / %zu incoherent rays, %d rounds (median thread CPU s)\n",
-              model.mesh.size(), primary.rays.size(), incoherent.rays.size(), rounds);
+  std::printf("%zu triangles, %zu primary / %zu incoherent / %zu shadow rays, %d rounds (median thread CPU s)\n",
+              model.mesh.size(), primary.rays.size(), incoherent.rays.size(), shadow.rays.size(), rounds);
   std::printf("%-14s %7s %7s %6s %8s %8s %6s %6s | %7s %7s %6s | %7s %7s %6s\n", "variant", "nodes", "leaves",
               "depth", "build_s", "prim_s", "ratio", "", "p.nodes", "p.leaf", "p.blk", "i.nodes", "i.leaf",
               "i.blk");
-  const double p0 = median(vs[0].primary_s), q0 = median(vs[0].incoherent_s);
+  const double p0 = median(vs[0].primary_s), q0 = median(vs[0].incoherent_s), s0 = median(vs[0].shadow_s);
   for (Variant& v : vs) {
     Counts cp, ci;
     const std::size_t step = 7;  // a sample of the rays is enough for the averages
@@ -276,4 +291,6 @@ int main(int argc, char** argv) {
                 v.build_s, p, p0 / p, q, q0 / q, cp.nodes / np, cp.leaves / np, cp.blocks / np, ci.nodes / ni,
                 ci.leaves / ni, ci.blocks / ni);
   }
+  std::printf("shadow (any hit), median thread CPU s and ratio to the first variant:\n");
+  for (Variant& v : vs) std::printf("  %-14s %8.4f %6.3f\n", v.name.c_str(), median(v.shadow_s), s0 / median(v.shadow_s));
 }

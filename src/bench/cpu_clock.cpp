@@ -13,10 +13,16 @@ double thread_cpu_seconds() {
 double measure_clock_ghz() {
   // 16 dependent adds per iteration: the loop's own dec/jnz run in parallel with the chain, so the
   // chain's latency (1 cycle per add) is the only bound. Written in asm so no compiler folds it.
+  // Register + register: Intel cores since Golden Cove fold chains of add-immediate at rename
+  // (Xeon model 207 ran 16 `add $1` in about 3 cycles, i.e. read 13-14 GHz); a register operand
+  // has to go through the adder.
   constexpr long kIterations = 2'500'000;  // 40 M adds ≈ 10 ms at 4 GHz
   long x = 0, i = kIterations;
+  const long one = 1;
   const double start = thread_cpu_seconds();
-  __asm__ volatile("1:\n .rept 16\n add $1, %0\n .endr\n dec %1\n jnz 1b\n" : "+r"(x), "+r"(i));
+  __asm__ volatile("1:\n .rept 16\n add %2, %0\n .endr\n dec %1\n jnz 1b\n"
+                   : "+r"(x), "+r"(i)
+                   : "r"(one));
   const double seconds = thread_cpu_seconds() - start;
   return seconds > 0 ? double(kIterations) * 16.0 / seconds / 1e9 : 0.0;
 }
