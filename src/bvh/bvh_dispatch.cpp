@@ -16,8 +16,13 @@ BvhWidths bvh_widths(Isa isa) {
   return {{8, 4, 0}, 2};
 }
 
-int default_bvh_width(Isa isa, std::size_t triangles) {
+int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor) {
+  if (isa == Isa::avx512 && vendor == "GenuineIntel") return 16;
   return isa != Isa::scalar && triangles >= kWideNodeTriangles ? 16 : 8;
+}
+
+int default_bvh_width(Isa isa, std::size_t triangles) {
+  return default_bvh_width(isa, triangles, cpu_features().vendor);
 }
 
 const BvhKernels& bvh_kernels(Isa isa, int width) {

@@ -2,6 +2,7 @@
 // (bvh_dispatch.cpp) like the triangle kernel table, never per ray.
 #pragma once
 #include <cstddef>
+#include <string_view>
 
 #include "bvh/wide_bvh.h"
 #include "kernels/kernel_table.h"
@@ -35,10 +36,15 @@ struct BvhWidths {
 };
 BvhWidths bvh_widths(Isa isa);
 
-// The node width a BVH over `triangles` triangles gets by default (measured, docs/benchmarks.md,
-// "Blocked rows, 16-wide nodes, huge pages"): 16 on AVX-512 and AVX2 from kWideNodeTriangles
-// triangles up (deep trees: fewer levels, so fewer dependent node fetches per ray), else 8.
+// The node width a BVH over `triangles` triangles gets by default on a CPU whose cpuid vendor is
+// `vendor`, as measured (docs/benchmarks.md, "Blocked rows, 16-wide nodes, huge pages" and "An
+// Intel Xeon"): 16 on AVX-512 and AVX2 from kWideNodeTriangles triangles up (deep trees: fewer
+// levels, so fewer dependent node fetches per ray), else 8 — except AVX-512 on Intel, 16 at every
+// size (Xeon model 207, 4k-triangle meshes: single rays +7–19 %, packets within ±3 %; on AMD Zen 5
+// small meshes lost up to 11 % of their shadow rays with 16-wide nodes). The two-argument form
+// uses this CPU's vendor.
 inline constexpr std::size_t kWideNodeTriangles = 32768;
+int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
 int default_bvh_width(Isa isa, std::size_t triangles);
 
 // The table for (isa, width); the ISA must be supported and the width one of bvh_widths(isa).

@@ -10,6 +10,7 @@
 #include "bvh/bvh_kernels.h"
 #include "bvh/leaf_alignment.h"
 #include "bvh/wide_bvh.h"
+#include "kernels/isa.h"
 #include "kernels/triangle_soa.h"
 #include "bvh_scenes.h"
 
@@ -70,14 +71,22 @@ TEST(LeafAlignment, PaddingSlotsBecomeZeroAreaSlotsWithoutId) {
   EXPECT_EQ(wide.leaf_count(), leaf_contents(tree).size());
 }
 
-// The default node width (bvh_kernels.h): 16 on the SIMD ISAs for deep trees, 8 otherwise; and a
-// Bvh's leaves start on its kernel's width.
-TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesOnlyForLargeMeshesOnSimdIsas) {
-  EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles), 16);
-  EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles - 1), 8);
-  EXPECT_EQ(default_bvh_width(Isa::avx2, kWideNodeTriangles), 16);
-  EXPECT_EQ(default_bvh_width(Isa::avx2, kWideNodeTriangles - 1), 8);
-  EXPECT_EQ(default_bvh_width(Isa::scalar, 1u << 20), 8);
+// The default node width (bvh_kernels.h): 16 on the SIMD ISAs for deep trees, and on Intel's AVX-512
+// for every tree, 8 otherwise; and a Bvh's leaves start on its kernel's width.
+TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
+  for (const char* amd_or_other : {"AuthenticAMD", "HygonGenuine", ""}) {
+    EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles, amd_or_other), 16);
+    EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles - 1, amd_or_other), 8);
+  }
+  EXPECT_EQ(default_bvh_width(Isa::avx512, 1, "GenuineIntel"), 16);
+  EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles, "GenuineIntel"), 16);
+  for (const char* vendor : {"AuthenticAMD", "GenuineIntel"}) {
+    EXPECT_EQ(default_bvh_width(Isa::avx2, kWideNodeTriangles, vendor), 16);
+    EXPECT_EQ(default_bvh_width(Isa::avx2, kWideNodeTriangles - 1, vendor), 8);
+    EXPECT_EQ(default_bvh_width(Isa::scalar, 1u << 20, vendor), 8);
+  }
+  EXPECT_EQ(default_bvh_width(Isa::avx512, 100),
+            default_bvh_width(Isa::avx512, 100, cpu_features().vendor));  // this CPU's vendor
   if (!isa_supported(Isa::avx512)) GTEST_SKIP() << "no AVX-512 on this CPU: the built-Bvh half is skipped";
   const TriangleMesh big = test::random_soup(int(kWideNodeTriangles), 0.01f, 3);
   const Bvh bvh(big, TraceConfig{Isa::avx512, Intersector::mt});
