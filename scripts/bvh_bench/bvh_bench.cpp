@@ -7,7 +7,8 @@
 //   bvh_bench MODEL.obj [ROUNDS] VARIANT...
 //   VARIANT = name:key=value,key=value  (keys: block, max_leaf, trav, bins, width, trv=0|1,
 //             isa=2 for AVX2 instead of AVX-512)
-// trv=1 traverses with the variant traversal compiled into this harness (variant_avx512.cpp).
+// trv=1 traverses with the variant traversal compiled into this harness (variant_avx512.cpp), for
+// the closest-hit sets and the shadow rays.
 //   bvh_bench MODEL.obj phases [ROUNDS]   build phases (binary SAH, collapse, TriangleSoA fill) at
 //                                         OMP_NUM_THREADS threads: wall and process CPU seconds
 // RV_SIDE=N traces N×N primary rays instead of 1024×1024; RV_ROUNDS=1 prints every round's times.
@@ -38,6 +39,8 @@ using namespace rayvec;
 namespace rayvec::variant {
 void closest(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
              const Ray& ray, Hit& hit);
+bool occluded(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+              const Ray& ray);
 }
 
 namespace {
@@ -235,8 +238,11 @@ int main(int argc, char** argv) {
     const BvhKernels& tk = bvh_kernels(v.isa, v.bvh->tree().width());
     const TriangleKernels& kernels = triangle_kernels(v.isa, config.intersector);
     for (std::size_t i = 0; i < shadow.rays.size(); ++i)
-      occluded[i] = tk.occluded(v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels, shadow.rays[i],
-                                nullptr);
+      occluded[i] = v.variant_traversal
+                        ? variant::occluded(v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels,
+                                            shadow.rays[i])
+                        : tk.occluded(v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels,
+                                      shadow.rays[i], nullptr);
     return cpu_now() - t0;
   };
   auto trace = [&](const Variant& v, const RaySet& set) {

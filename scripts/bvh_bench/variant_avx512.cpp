@@ -1,5 +1,6 @@
-// The variant traversal of bvh_bench (trv=1): the .inl named by -DRV_VARIANT_INL (by default the
-// tree's own bvh_traversal.inl) compiled as an AVX-512 unit, 8- or 16-wide nodes.
+// The variant traversal of bvh_bench (trv=1; closest and any hit): the .inl named by
+// -DRV_VARIANT_INL (by default the tree's own bvh_traversal.inl) compiled as an AVX-512 unit, 8- or
+// 16-wide nodes.
 #include <cstdint>
 
 #include "bvh/bvh_kernels.h"
@@ -18,5 +19,10 @@ void closest(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKer
              const Ray& ray, Hit& hit) {
   if (bvh.width == 16) avx512::variant_unit::bvh_closest<avx512::BoxLanes16>(bvh, tris, kernels, ray, hit);
   else avx512::variant_unit::bvh_closest<avx512::BoxLanes8>(bvh, tris, kernels, ray, hit);
+}
+bool occluded(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+              const Ray& ray) {
+  if (bvh.width == 16) return avx512::variant_unit::bvh_occluded<avx512::BoxLanes16>(bvh, tris, kernels, ray, nullptr);
+  return avx512::variant_unit::bvh_occluded<avx512::BoxLanes8>(bvh, tris, kernels, ray, nullptr);
 }
 }  // namespace rayvec::variant
