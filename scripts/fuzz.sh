@@ -26,7 +26,9 @@ targets=("$@")
 build="${RAYVEC_FUZZ_BUILD:-$root/build-fuzz}"
 
 "$root/scripts/install-deps.sh" --with-fuzz
-cmake -S "$root/tests/fuzz" -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 >/dev/null
+# -g1: line tables only (file:line in reports), a third less compile time than -g
+cmake -S "$root/tests/fuzz" -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
 cmake --build "$build" -j "$(nproc)"
 
 # The harnesses write their input to files here (memory-backed when /dev/shm exists).
