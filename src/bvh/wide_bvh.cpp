@@ -11,23 +11,24 @@
 namespace rayvec {
 namespace {
 
-// Which inner child a wide node opens next (the greedy collapse in fill()): 4- and 8-wide nodes the
-// one with the largest area, the SAH's choice for the node itself; 16-wide nodes the one with the
-// most triangles, which keeps the subtrees left below a node of similar size, so the bottom levels
-// come out full (1M sphere: 9,265 -> 5,958 nodes, mean leaf depth 4.34 -> 4.05). Counted with
-// scripts/bvh_bench over the bench's rays, node visits per ray fall 2.5-6 % at 16 wide and rise
-// 4-27 % at 8 wide under the count rule (docs/benchmarks.md, "An Intel Xeon, 2026-12-01").
-template <int N>
-inline constexpr bool kOpenByTriangles = N >= 16;
+// Which inner child a wide node opens next (the greedy collapse in fill()): the one with the largest
+// area (the SAH's choice for the node itself) or the one with the most triangles (keeps the subtrees
+// left below a node of similar size, so the bottom levels can come out full). Neither wins on every
+// tree: on the bench meshes the count rule cut node visits per ray 2.5-6 % for AVX-512's 16-wide
+// trees and raised them 4-27 % for 8-wide trees and 7 % for AVX2's 16-wide tree of the 1M sphere
+// (docs/benchmarks.md, "An Intel Xeon, 2026-12-01"). So WideBvh collapses both ways and keeps the
+// tree of the lower SAH node cost, Σ over wide nodes of their box's area (the expected node visits
+// of a random ray up to a factor; the leaves are the same either way).
+enum class OpenRule { largest_area, most_triangles };
 
 template <int N>
 class Collapser {
  public:
-  explicit Collapser(const BinaryBvh& tree) : tree_(tree) {
-    if constexpr (kOpenByTriangles<N>) count_triangles();
+  Collapser(const BinaryBvh& tree, OpenRule rule) : tree_(tree), rule_(rule) {
+    if (rule == OpenRule::most_triangles) count_triangles();
   }
 
-  std::vector<WideNode<N>> run(uint32_t& depth, uint32_t& leaves) {
+  std::vector<WideNode<N>> run(uint32_t& depth, uint32_t& leaves, double& sah_cost) {
     nodes_.emplace_back();
     clear(nodes_[0]);
     if (!tree_.nodes.empty()) {
@@ -43,6 +44,7 @@ class Collapser {
     }
     depth = depth_;
     leaves = leaves_;
+    sah_cost = sah_cost_;
     return std::move(nodes_);
   }
 
@@ -95,15 +97,16 @@ class Collapser {
       }
     }
   }
-  // The priority of opening binary node k (see kOpenByTriangles).
+  // The priority of opening binary node k (see OpenRule).
   float open_priority(uint32_t k) const {
-    if constexpr (kOpenByTriangles<N>) return float(triangles_[k]);
-    else return tree_.nodes[k].box.half_area();
+    if (rule_ == OpenRule::most_triangles) return float(triangles_[k]);
+    return tree_.nodes[k].box.half_area();
   }
 
   // Fills wide node w from the binary inner node b (at wide level `level`).
   void fill(uint32_t w, uint32_t b, uint32_t level) {
     depth_ = std::max(depth_, level);
+    sah_cost_ += tree_.nodes[b].box.half_area();
     uint32_t kids[N];
     int count = 2;
     kids[0] = tree_.nodes[b].first;
@@ -139,16 +142,27 @@ class Collapser {
   }
 
   const BinaryBvh& tree_;
-  std::vector<uint32_t> triangles_;  // kOpenByTriangles only
+  const OpenRule rule_;
+  std::vector<uint32_t> triangles_;  // most_triangles only
   std::vector<WideNode<N>> nodes_;
   uint32_t depth_ = 0, leaves_ = 0;
+  double sah_cost_ = 0;
 };
 
 // The nodes in a LargeBuffer (huge pages for big trees: fewer TLB misses per node fetch).
 template <int N>
 LargeBuffer collapse(const BinaryBvh& tree, uint32_t& count, uint32_t& depth, uint32_t& leaves,
                      std::size_t& bytes) {
-  const std::vector<WideNode<N>> nodes = Collapser<N>(tree).run(depth, leaves);
+  double by_area = 0, by_count = 0;
+  uint32_t depth_count = 0, leaves_count = 0;
+  std::vector<WideNode<N>> nodes = Collapser<N>(tree, OpenRule::largest_area).run(depth, leaves, by_area);
+  std::vector<WideNode<N>> other =
+      Collapser<N>(tree, OpenRule::most_triangles).run(depth_count, leaves_count, by_count);
+  if (by_count < by_area) {  // see OpenRule
+    nodes = std::move(other);
+    depth = depth_count;
+    leaves = leaves_count;
+  }
   bytes = nodes.size() * sizeof(WideNode<N>);
   LargeBuffer p = allocate_large_buffer(bytes);
   std::memcpy(p.get(), nodes.data(), bytes);

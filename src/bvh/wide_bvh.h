@@ -44,9 +44,10 @@ class WideBvh {
  public:
   WideBvh() = default;
   // Collapses `tree` (leaves of at most kMaxLeafTriangles) into nodes of `width` ∈ {4, 8, 16}
-  // children, greedily opening inner children until a node is full: at 4 and 8 wide the one of
-  // largest surface area first, at 16 wide the one with the most triangles (wide_bvh.cpp says why).
-  // Throws std::length_error when there are 2^26 or more triangles.
+  // children, greedily opening inner children until a node is full — once opening the child of
+  // largest surface area first, once the one with the most triangles — and keeps the tree of lower
+  // SAH node cost (wide_bvh.cpp says why). Throws std::length_error when there are 2^26 or more
+  // triangles.
   WideBvh(const BinaryBvh& tree, int width);
 
   const BvhArrays& arrays() const { return arrays_; }
