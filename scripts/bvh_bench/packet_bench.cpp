@@ -10,6 +10,8 @@
 // is timed with them; variants named old* (a copy of an older bvh_packet.inl) get the older
 // contract's caller work instead, as Bvh::closest_stream did it: hits reset, untraceable lanes out.
 //   packet_bench MODEL.obj [ROUNDS]      RV_SIDE=N: N×N rays instead of 1024×1024
+// RV_ISA=avx2: an AVX2 tree, Embree capped at AVX2, variants from packet_variant_avx2.cpp (built by
+// RV_ISA=avx2 packet_build.sh; each 4×4 tile as two 8-ray packets).
 #include <time.h>
 
 #include <algorithm>
@@ -65,12 +67,13 @@ int main(int argc, char** argv) {
   }
   const ObjModel model = load_obj(argv[1]);
   const int rounds = argc > 2 ? std::atoi(argv[2]) : 7;
-  const TraceConfig config{Isa::avx512, Intersector::mt};
+  const bool avx2 = std::getenv("RV_ISA") && std::strcmp(std::getenv("RV_ISA"), "avx2") == 0;
+  const TraceConfig config{avx2 ? Isa::avx2 : Isa::avx512, Intersector::mt};
   const TriangleKernels& kernels = triangle_kernels(config.isa, config.intersector);
   const Bvh bvh(model.mesh, config);
   const BvhKernels& table = bvh_kernels(config.isa, bvh.tree().width());
   double embree_build = 0;
-  const std::unique_ptr<RayTracer> embree = make_embree_tracer(model.mesh, 1, "avx512", embree_build);
+  const std::unique_ptr<RayTracer> embree = make_embree_tracer(model.mesh, 1, avx2 ? "avx2" : "avx512", embree_build);
   const int side = std::getenv("RV_SIDE") ? std::atoi(std::getenv("RV_SIDE")) : 1024;
   const BenchCamera cam = frame_mesh(model.mesh, side, side);
   std::vector<uint32_t> start;
@@ -83,7 +86,8 @@ int main(int argc, char** argv) {
     bool stream = false;
   };
   std::vector<Run> runs;
-  runs.push_back({"tree", table.closest_packet, {}});
+  // the tree's table traces 16-ray tiles only with 16-ray packets (AVX2: "stream" instead)
+  runs.push_back({"tree", avx2 ? nullptr : table.closest_packet, {}, avx2});
   runs.push_back({"stream", nullptr, {}, true});
   for (const auto& e : pbench::registry()) runs.push_back({e.name, e.fn, {}});
   runs.push_back({"embree", nullptr, {}});

@@ -5,8 +5,8 @@
 // operand order of every max/min is part of it (L::max(a, b) returns b when a is NaN).
 //
 // L provides: T, W, set1(float), load(const float*) (aligned), storeu(float*, T), sub, mul, max,
-// min, fmadd(a, b, c) = a·b + c, fnmadd(a, b, c) = c − a·b, abs, le_bits(a, b) (bit k: a[k] <= b[k],
-// ordered).
+// min, fmadd(a, b, c) = a·b + c, fnmadd(a, b, c) = c − a·b, fmsub(a, b, c) = a·b − c, abs,
+// le_bits(a, b) (bit k: a[k] <= b[k], ordered).
 
 // Per-ray constants: origin, 1/d and, per axis, the bounds rows of the near and far planes
 // (0..2 lo, 3..5 hi).
@@ -23,6 +23,24 @@ struct BoxForwardRay {
   int nx, ny, nz, fx, fy, fz;
 };
 
+// The hull of a packet of rays that all have tmin >= 0 and the same direction signs, as scalars
+// (PacketForward<L, true>::hull): per axis the smallest and largest near- and far-plane
+// reciprocals 1/d·(1 ∓ eps) over the lanes, the largest near-plane offset kn and the smallest
+// far-plane offset kf (k = o·r' rounded outward), the bounds rows of the near and far planes, and
+// the smallest tmin. bvh_packet.inl says why a box it misses is missed by every lane.
+struct PacketHull {
+  float nr_lo[3], nr_hi[3], kn_hi[3], fr_lo[3], fr_hi[3], kf_lo[3];
+  float tmin;
+  int near[3], far[3];
+};
+
+// PacketHull in lanes: each value broadcast.
+template <class L>
+struct BoxHull {
+  typename L::T nr_lo[3], nr_hi[3], kn_hi[3], fr_lo[3], fr_hi[3], kf_lo[3], tmin;
+  int near[3], far[3];
+};
+
 template <class L>
 struct BoxPrepare {
   using RayData = BoxRay<L>;
@@ -37,6 +55,22 @@ struct BoxPrepare {
             L::set1(rdir[0] * dn), L::set1(rdir[1] * dn), L::set1(rdir[2] * dn),
             L::set1(rdir[0] * up), L::set1(rdir[1] * up), L::set1(rdir[2] * up),
             near[0], near[1], near[2], far_row(near[0]), far_row(near[1]), far_row(near[2])};
+  }
+
+  static RAYVEC_INLINE BoxHull<L> prepare_hull(const PacketHull& h) {
+    BoxHull<L> b;
+    for (int a = 0; a < 3; ++a) {
+      b.nr_lo[a] = L::set1(h.nr_lo[a]);
+      b.nr_hi[a] = L::set1(h.nr_hi[a]);
+      b.kn_hi[a] = L::set1(h.kn_hi[a]);
+      b.fr_lo[a] = L::set1(h.fr_lo[a]);
+      b.fr_hi[a] = L::set1(h.fr_hi[a]);
+      b.kf_lo[a] = L::set1(h.kf_lo[a]);
+      b.near[a] = h.near[a];
+      b.far[a] = h.far[a];
+    }
+    b.tmin = L::set1(h.tmin);
+    return b;
   }
 
   static RAYVEC_INLINE RayData prepare(const float o[3], const float rdir[3], const int near[3]) {
@@ -64,6 +98,23 @@ struct BoxRows {
     const T lo = L::max(tnz, L::max(tny, L::max(tnx, L::set1(tmin))));
     const T hi = L::min(tfz, L::min(tfy, L::min(tfx, L::set1(tmax))));
     L::storeu(dist, lo);
+    return L::le_bits(lo, hi);
+  }
+
+  // Bit k clear when no lane of the packet whose hull is h (tmax: the largest tmax over its lanes)
+  // enters child k's box under PacketForward<L, true>::hits. Per slab, the lower bound of the
+  // lanes' entry distances b·r' − k: b·r' is linear in r', so its smallest value over
+  // [nr_lo, nr_hi] is at one end, and k is at most kn_hi; the FMA rounds once and rounding is
+  // monotonic, so fl(b·nr_x − kn_hi) for the smaller end is at most every lane's computed
+  // distance. Exits mirror it. No NaN: the forward test's guard keeps every r' finite and nonzero.
+  static RAYVEC_INLINE unsigned hits_hull(const float* b, const BoxHull<L>& h, typename L::T tmax) {
+    using T = typename L::T;
+    T lo = h.tmin, hi = tmax;
+    for (int a = 0; a < 3; ++a) {
+      const T bn = L::load(b + long(h.near[a]) * Stride), bf = L::load(b + long(h.far[a]) * Stride);
+      lo = L::max(lo, L::min(L::fmsub(bn, h.nr_lo[a], h.kn_hi[a]), L::fmsub(bn, h.nr_hi[a], h.kn_hi[a])));
+      hi = L::min(hi, L::max(L::fmsub(bf, h.fr_lo[a], h.kf_lo[a]), L::fmsub(bf, h.fr_hi[a], h.kf_lo[a])));
+    }
     return L::le_bits(lo, hi);
   }
 
@@ -108,6 +159,9 @@ struct BoxLanesOne : BoxPrepare<L> {
                                      float eps, float* dist) {
     return BoxRows<L, N>::hits(b[0], r, tmin, tmax, eps, dist);
   }
+  static RAYVEC_INLINE unsigned hits_hull(const float (*b)[N], const BoxHull<L>& h, float tmax) {
+    return BoxRows<L, N>::hits_hull(b[0], h, L::set1(tmax));
+  }
 };
 
 // A WideNode<2·L::W>: two registers per bounds row (children 0..W−1, then W..2W−1).
@@ -123,5 +177,9 @@ struct BoxLanesTwo : BoxPrepare<L> {
                                      float eps, float* dist) {
     return BoxRows<L, N>::hits(b[0], r, tmin, tmax, eps, dist) |
            BoxRows<L, N>::hits(b[0] + L::W, r, tmin, tmax, eps, dist + L::W) << L::W;
+  }
+  static RAYVEC_INLINE unsigned hits_hull(const float (*b)[N], const BoxHull<L>& h, float tmax) {
+    const typename L::T t = L::set1(tmax);
+    return BoxRows<L, N>::hits_hull(b[0], h, t) | BoxRows<L, N>::hits_hull(b[0] + L::W, h, t) << L::W;
   }
 };

@@ -40,6 +40,10 @@ struct Ymm : YmmOps {
     const T neg = _mm256_xor_ps(v, _mm256_set1_ps(-0.0f));
     return -hmin(_mm256_blendv_ps(_mm256_set1_ps(__builtin_inff()), neg, signs_from_bits(lanes)));
   }
+  // The smallest of v over `lanes` (nonzero).
+  static RAYVEC_INLINE float min_lanes(T v, unsigned lanes) {
+    return hmin(_mm256_blendv_ps(_mm256_set1_ps(__builtin_inff()), v, signs_from_bits(lanes)));
+  }
 };
 
 #include "kernels/simd/box_lanes.inl"

@@ -48,6 +48,9 @@ struct Zmm {
   static RAYVEC_INLINE float max_lanes(T v, unsigned lanes) {
     return _mm512_mask_reduce_max_ps(__mmask16(lanes), v);
   }
+  static RAYVEC_INLINE float min_lanes(T v, unsigned lanes) {
+    return _mm512_mask_reduce_min_ps(__mmask16(lanes), v);
+  }
 };
 
 #include "kernels/simd/box_lanes.inl"

@@ -7,7 +7,8 @@
 //
 // L provides, beyond box_lanes.inl's operations: loadu, fmsub(a, b, c) = a·b − c, Signs (a lane
 // mask type), signs_of(r) (the lanes whose r has its sign bit set), signs_from_bits(unsigned),
-// blend(Signs m, a, b) (b in the lanes of m, a elsewhere), max_lanes(T, unsigned lanes).
+// blend(Signs m, a, b) (b in the lanes of m, a elsewhere), max_lanes(T, unsigned lanes) and
+// min_lanes(T, unsigned lanes) (the largest and smallest lane of `lanes`, nonzero).
 
 // The general test (any tmin): the widening per child, as BoxLanes does it. Each lane picks its
 // near plane by the sign of its own direction, so a lane's answer equals the single-ray test's.
@@ -105,6 +106,27 @@ struct PacketForward {
   }
   RAYVEC_INLINE void set_tmax(const float* t) { tmax = L::loadu(t); }
   RAYVEC_INLINE float max_tmax(unsigned lanes) const { return L::max_lanes(tmax, lanes); }
+
+  // The hull of the lanes `lanes` (box_lanes.inl's PacketHull); Uniform only, where every lane has
+  // the same near and far planes.
+  RAYVEC_INLINE PacketHull hull(unsigned lanes) const {
+    static_assert(Uniform, "a hull needs the same near and far planes in every lane");
+    const T nr[3] = {nrx, nry, nrz}, fr[3] = {frx, fry, frz}, kn[3] = {knx, kny, knz}, kf[3] = {kfx, kfy, kfz};
+    const int near[3] = {nx, ny, nz}, far[3] = {fx, fy, fz};
+    PacketHull h;
+    for (int a = 0; a < 3; ++a) {
+      h.nr_lo[a] = L::min_lanes(nr[a], lanes);
+      h.nr_hi[a] = L::max_lanes(nr[a], lanes);
+      h.kn_hi[a] = L::max_lanes(kn[a], lanes);
+      h.fr_lo[a] = L::min_lanes(fr[a], lanes);
+      h.fr_hi[a] = L::max_lanes(fr[a], lanes);
+      h.kf_lo[a] = L::min_lanes(kf[a], lanes);
+      h.near[a] = near[a];
+      h.far[a] = far[a];
+    }
+    h.tmin = L::min_lanes(tmin, lanes);
+    return h;
+  }
 
   // As PacketLanesBase::hits.
   template <int N>
