@@ -94,9 +94,9 @@ RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& 
 // The children of a node that some lane of the packet may enter: all of them, or with a hull
 // (uniform forward packets) those whose box the hull of the packet's lanes enters — one test of
 // every child against the whole packet (B::hits_hull) instead of one test a child. A camera
-// packet enters few of a wide node's children, so this skips most of the per-child tests: +22 %
-// (4k sphere), +27 % (1M sphere), +33 % (Wuson) primary packets on the Xeon of 2026-12-01
-// (packet_bench, same process). It only filters: a child it passes is tested lane by lane as
+// packet enters few of a wide node's children, so this skips most of the per-child tests. On the
+// Xeon of 2026-12-01 (packet_bench, same process, 1 thread) primary packets gained 13 % (4k
+// sphere), 16 % (1M sphere) and 26 % (Wuson) with AVX-512, 7 % and 12 % (spheres) with AVX2. It only filters: a child it passes is tested lane by lane as
 // before, so the results are unchanged bit for bit.
 template <class B, bool WithHull>
 struct PacketChildren;
