@@ -220,9 +220,7 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
 template <class B, class PK>
 void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
                         const TriangleKernels& kernels, const Ray* rays, Hit* hits, unsigned active) {
-  constexpr int N = B::N;
   constexpr int P = PK::P;
-  const WideNode<N>* nodes = static_cast<const WideNode<N>*>(bvh.nodes);
   static_assert(vfloat::W == P, "the packet leaf kernel has one ray per vfloat lane");
   static_assert(sizeof(Ray) == 8 * sizeof(float), "PK::load_rays reads a Ray as 8 floats");
   // Streams of packets (closest_stream, tiles of a frame) lie one after the other: start loading
@@ -237,7 +235,11 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
     __builtin_prefetch(reinterpret_cast<const void*>(ahead_rays + j));
   for (uintptr_t j = 0; j < P * sizeof(Hit); j += 64)
     __builtin_prefetch(reinterpret_cast<const void*>(ahead_hits + j), 1);
-  for (unsigned m = active; m != 0; m &= m - 1) hits[__builtin_ctz(m)] = Hit{};
+  if (active == (1u << P) - 1u) {  // a full packet: P contiguous stores the compiler vectorizes
+    for (int k = 0; k < P; ++k) hits[k] = Hit{};
+  } else {
+    for (unsigned m = active; m != 0; m &= m - 1) hits[__builtin_ctz(m)] = Hit{};
+  }
   // the rays as SoA rows: o, d, tmin, tmax (= the ray's tmax: no hit yet); 1/d
   alignas(64) float soa[8][P], rd[3][P];
   active = PK::load_rays(reinterpret_cast<const float*>(rays), active, soa);
@@ -253,12 +255,12 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
   float* tmax = soa[7];
 
   // Camera packets often miss the whole mesh (the background): the root's box (the union of its
-  // children's) first, one test instead of N, dropping the lanes that miss it.
-  float root_lo[3], root_hi[3];
+  // children's, kept by WideBvh) first, one test instead of N, dropping the lanes that miss it.
+  const float* const root_lo = bvh.root_lo;
+  const float* const root_hi = bvh.root_hi;
   {
-    float* const lo = root_lo;
-    float* const hi = root_hi;
-    PK::template union_box<N>(nodes[0].bounds, lo, hi);
+    const float* const lo = root_lo;
+    const float* const hi = root_hi;
     const vfloat o[3] = {vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2])};
     const vfloat r[3] = {vfloat::load(rd[0]), vfloat::load(rd[1]), vfloat::load(rd[2])};
     active = packet_box_lanes(lo, hi, o, r, vfloat::load(soa[6]), vfloat::load(soa[7]),

@@ -185,7 +185,18 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width) {
   }
   storage_ = std::move(p);
   arrays_ = BvhArrays{storage_.get(), uint32_t(width), count, depth_ * uint32_t(width - 1) + 1,
-                      kDefaultBoxEpsilon};
+                      kDefaultBoxEpsilon, {}, {}};
+  // the root's rows: bounds[0..2][k] = lo, bounds[3..5][k] = hi of child k, k < width, row-major
+  const float* rows = static_cast<const float*>(storage_.get());
+  for (int a = 0; a < 3; ++a) {
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (int k = 0; k < width; ++k) {
+      lo = std::min(lo, rows[a * width + k]);
+      hi = std::max(hi, rows[(a + 3) * width + k]);
+    }
+    arrays_.root_lo[a] = lo;
+    arrays_.root_hi[a] = hi;
+  }
 }
 
 }  // namespace rayvec

@@ -38,6 +38,9 @@ struct BvhArrays {
   uint32_t node_count;
   uint32_t stack_size;   // entries a traversal stack needs: depth · (width − 1) + 1, never exceeded
   float box_epsilon;     // relative widening of ray–box intervals (kDefaultBoxEpsilon)
+  // the union of the root's child boxes, the bounds of the whole tree (lo = +inf, hi = −inf when
+  // there are none): the packets' first test (bvh_packet.inl)
+  float root_lo[3], root_hi[3];
 };
 
 class WideBvh {

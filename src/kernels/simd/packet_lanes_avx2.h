@@ -1,7 +1,7 @@
 // AVX2 packet lanes for bvh/bvh_packet.inl: 8 rays, one per ymm lane. The box tests are
 // packet_lanes.inl's over the Ymm lane type (PacketLanes8: any tmin; its Forward: tmin >= 0, one
-// FMA a slab); this file adds the packet's setup (the AoS → SoA transpose of its rays, the root
-// box) and a lane reduction. One of the only files that include <immintrin.h>;
+// FMA a slab); this file adds the packet's setup (the AoS → SoA transpose of its rays) and a
+// lane reduction. One of the only files that include <immintrin.h>;
 // included only by *_avx2.cpp units after box_lanes_avx2.h, in namespace rayvec::avx2.
 #pragma once
 #include <immintrin.h>
@@ -48,26 +48,6 @@ struct PacketLanes8 : PacketLanesBase<Ymm, PacketLanes8> {
       bad = _mm256_or_ps(bad,
                          _mm256_cmp_ps(_mm256_andnot_ps(sign, _mm256_load_ps(rows[f])), inf, _CMP_NLT_UQ));
     return lanes & ~unsigned(_mm256_movemask_ps(bad));
-  }
-  // The union of the N <= 8 or 16 child boxes of a node (bounds rows b[0..5]).
-  template <int N>
-  static RAYVEC_INLINE void union_box(const float (*b)[N], float lo[3], float hi[3]) {
-    static_assert(N <= 8 || N == 16, "one or two ymm per bounds row");
-    if constexpr (N == 16) {  // two full halves; unused slots (lo +inf, hi −inf) change nothing
-      const __m256 sign = _mm256_set1_ps(-0.0f);
-      for (int a = 0; a < 3; ++a) {
-        lo[a] = Ymm::hmin(_mm256_min_ps(_mm256_loadu_ps(b[a]), _mm256_loadu_ps(b[a] + 8)));
-        hi[a] = -Ymm::hmin(_mm256_min_ps(_mm256_xor_ps(_mm256_loadu_ps(b[a + 3]), sign),
-                                         _mm256_xor_ps(_mm256_loadu_ps(b[a + 3] + 8), sign)));
-      }
-      return;
-    }
-    const __m256 keep = Ymm::signs_from_bits((1u << N) - 1u), inf = _mm256_set1_ps(__builtin_inff());
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    for (int a = 0; a < 3; ++a) {  // rows of N < 8 floats are padded by the next row: masked off
-      lo[a] = Ymm::hmin(_mm256_blendv_ps(inf, _mm256_loadu_ps(b[a]), keep));
-      hi[a] = -Ymm::hmin(_mm256_blendv_ps(inf, _mm256_xor_ps(_mm256_loadu_ps(b[a + 3]), sign), keep));
-    }
   }
   // The smallest of tn over `lanes` (nonzero).
   static RAYVEC_INLINE float min_lanes(const float* tn, unsigned lanes) {

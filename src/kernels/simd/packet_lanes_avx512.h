@@ -1,7 +1,7 @@
 // AVX-512 packet lanes for bvh/bvh_packet.inl: 16 rays, one per zmm lane. The box tests are
 // packet_lanes.inl's over the Zmm lane type (PacketLanes16: any tmin; its Forward: tmin >= 0, one
-// FMA a slab); this file adds the packet's setup (the AoS → SoA transpose of its rays, the root
-// box) and a lane reduction. One of the only files that include <immintrin.h>;
+// FMA a slab); this file adds the packet's setup (the AoS → SoA transpose of its rays) and a
+// lane reduction. One of the only files that include <immintrin.h>;
 // included only by *_avx512.cpp units after box_lanes_avx512.h, in namespace rayvec::avx512.
 #pragma once
 #include <immintrin.h>
@@ -60,15 +60,6 @@ struct PacketLanes16 : PacketLanesBase<Zmm, PacketLanes16> {
     bad |= _mm512_fpclass_ps_mask(_mm512_load_ps(rows[6]), 0x81);
     bad |= _mm512_fpclass_ps_mask(_mm512_load_ps(rows[7]), 0x81);
     return lanes & ~bad;
-  }
-  // The union of the N <= 16 child boxes of a node (bounds rows b[0..5]).
-  template <int N>
-  static RAYVEC_INLINE void union_box(const float (*b)[N], float lo[3], float hi[3]) {
-    const __mmask16 m = __mmask16((1u << N) - 1u);
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = _mm512_mask_reduce_min_ps(m, _mm512_maskz_loadu_ps(m, b[a]));
-      hi[a] = _mm512_mask_reduce_max_ps(m, _mm512_maskz_loadu_ps(m, b[a + 3]));
-    }
   }
   // The smallest of tn over `lanes` (nonzero).
   static RAYVEC_INLINE float min_lanes(const float* tn, unsigned lanes) {
