@@ -356,24 +356,24 @@ RAYVEC_INLINE void mt_closest_step(const TriangleArrays& T, uint32_t i, const Ra
 }
 
 // The winner among the lanes of `b` (nearest t, then lowest id) replaces `hit` if nearer; u and v
-// are divided once, here.
+// are divided once, here. The nearest t is one lane reduction; only when several lanes hold it
+// are their ids compared (lanes without a hit still hold `initial`, above every hit, and no lane
+// holds NaN: a t is kept only after ordered compares).
 template <class V>
 RAYVEC_INLINE void mt_finish(const TriangleArrays& T, const MtBest<V>& b, float initial, Hit& hit) {
   constexpr int W = V::W;
   if (!b.found) return;
-  float ts[W], us[W], vs[W], as[W];
+  const float t = hmin(b.t);
+  if (!(t < initial)) return;
+  float us[W], vs[W], as[W];
   int64_t idx[W];
-  b.t.store(ts); b.un.store(us); b.vn.store(vs); b.adet.store(as); b.idx.store_index(idx);
-  int k_best = -1;
-  for (int k = 0; k < W; ++k) {
-    if (!(ts[k] < initial)) continue;
-    if (k_best < 0 || ts[k] < ts[k_best] ||
-        (ts[k] == ts[k_best] &&
-         T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]))
-      k_best = k;
+  b.un.store(us); b.vn.store(vs); b.adet.store(as); b.idx.store_index(idx);
+  unsigned nearest = bits(b.t <= V::broadcast(t));
+  int k_best = __builtin_ctz(nearest);
+  for (nearest &= nearest - 1; nearest != 0; nearest &= nearest - 1) {  // a tie: the lowest id
+    const int k = __builtin_ctz(nearest);
+    if (T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]) k_best = k;
   }
-  if (k_best < 0) return;
-  const float t = ts[k_best];
   const int32_t id = T.id[slot_offset(uint32_t(idx[k_best]))];
   if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri)))
     hit = Hit{t, (0.0f - us[k_best]) / as[k_best], vs[k_best] / as[k_best], id};  // 0 − un: no −0
