@@ -3,7 +3,9 @@
 median of each number as the Markdown table of docs/benchmarks.md ("BVH vs Embree").
 
     scripts/bench_rays_table.py RAYVEC_BINARY MESH.obj [MESH.obj ...] [--threads 1 2] [--runs 3]
-                                [--size 1024x1024]
+                                [--size 1024x1024] [--isa avx2]
+
+--isa passes that ISA to rayvec, which caps Embree at it too (AVX2 against AVX2).
 
 Medians over runs, because other processes share the machine: every ratio is taken inside one run
 (rayvec and Embree trace the same rays back to back) and the median of those ratios is printed.
@@ -20,9 +22,10 @@ SETS = [("primary", "rtcIntersect1"), ("primary_packet", "rtcIntersect16"),
         ("shadow", "rtcOccluded1"), ("incoherent", "rtcIntersect1")]
 
 
-def run(binary, mesh, threads, size):
+def run(binary, mesh, threads, size, isa):
+    extra = ["--isa", isa] if isa else []
     out = subprocess.run([binary, "bench", "rays", mesh, "--vs-embree", "--json", "--threads",
-                          str(threads), "--size", size], check=True, capture_output=True, text=True)
+                          str(threads), "--size", size] + extra, check=True, capture_output=True, text=True)
     return json.loads(out.stdout)
 
 
@@ -33,6 +36,7 @@ def main():
     ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--size", default="1024x1024")
+    ap.add_argument("--isa", default="", help="rayvec --isa (default: the best this CPU has)")
     a = ap.parse_args()
     med = statistics.median
     print("| mesh | triangles | threads | set (Embree call) | rayvec Mrays/s | Embree Mrays/s | ratio | id mismatches |")
@@ -43,7 +47,7 @@ def main():
         by_threads = {t: [] for t in a.threads}
         for _ in range(a.runs):  # interleaved: every round runs each thread count once
             for t in a.threads:
-                by_threads[t].append(run(a.binary, mesh, t, a.size))
+                by_threads[t].append(run(a.binary, mesh, t, a.size, a.isa))
         name = os.path.basename(mesh)
         if 1 in by_threads and 2 in by_threads:
             pairs = list(zip(by_threads[1], by_threads[2]))
