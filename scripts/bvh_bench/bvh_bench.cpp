@@ -81,6 +81,7 @@ Variant parse(const std::string& spec) {
     else if (k == "width") v.options.width = int(x);
     else if (k == "trv") v.variant_traversal = x != 0;
     else if (k == "isa") v.isa = x == 2 ? Isa::avx2 : Isa::avx512;
+    else if (k == "direct") v.options.direct_leaf = int(x);
     else { std::fprintf(stderr, "unknown key %s\n", k.c_str()); std::exit(2); }
   }
   if (!v.options.leaves_from_kernel) {  // keep the kernel-derived defaults for the other one

@@ -23,7 +23,9 @@ Bvh::Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& 
     : config_(config),
       kernels_(&triangle_kernels(config.isa, config.intersector)),
       traversal_(&bvh_kernels(config.isa,
-                              options.width ? options.width : default_bvh_width(config.isa, mesh.size()))) {
+                              options.width ? options.width : default_bvh_width(config.isa, mesh.size()),
+                              options.direct_leaf < 0 ? default_direct_leaf(config.isa, cpu_features().vendor)
+                                                      : options.direct_leaf != 0)) {
   SahConfig sah = options.sah;
   if (options.leaves_from_kernel && kernels_->width >= 8) {
     sah.leaf_block = uint32_t(kernels_->width);

@@ -20,6 +20,9 @@ struct BvhOptions {
   bool leaves_from_kernel = true;
   int width = 0;  // children per node: 0 = default_bvh_width(isa, triangles)
   float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
+  // The closest-hit traversal calls the float `mt` leaf kernel directly (1) or through the kernel
+  // table (0); −1 = default_direct_leaf(isa, this CPU's vendor). Same results either way.
+  int direct_leaf = -1;
 };
 
 class Bvh final : public Accelerator {
@@ -37,6 +40,7 @@ class Bvh final : public Accelerator {
 
   const WideBvh& tree() const { return tree_; }
   const TriangleSoA& triangles() const { return tris_; }
+  const BvhKernels& traversal() const { return *traversal_; }  // the traversal table in use
 
  private:
   TraceConfig config_;

@@ -25,14 +25,22 @@ int default_bvh_width(Isa isa, std::size_t triangles) {
   return default_bvh_width(isa, triangles, cpu_features().vendor);
 }
 
+bool default_direct_leaf(Isa isa, std::string_view vendor) {
+  return isa == Isa::avx512 && vendor == "GenuineIntel";
+}
+
 const BvhKernels& bvh_kernels(Isa isa, int width) {
+  return bvh_kernels(isa, width, default_direct_leaf(isa, cpu_features().vendor));
+}
+
+const BvhKernels& bvh_kernels(Isa isa, int width, bool direct_leaf) {
   if (!isa_supported(isa))
     throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
   const BvhKernels* k = nullptr;
   switch (isa) {
-    case Isa::avx512: k = avx512::bvh_kernels(width); break;
-    case Isa::avx2: k = avx2::bvh_kernels(width); break;
-    case Isa::scalar: k = scalar::bvh_kernels(width); break;
+    case Isa::avx512: k = avx512::bvh_kernels(width, direct_leaf); break;
+    case Isa::avx2: k = avx2::bvh_kernels(width, direct_leaf); break;
+    case Isa::scalar: k = scalar::bvh_kernels(width, direct_leaf); break;
   }
   if (!k)
     throw std::invalid_argument("no " + std::to_string(width) + "-wide BVH traversal for ISA " +

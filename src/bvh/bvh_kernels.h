@@ -47,11 +47,21 @@ inline constexpr std::size_t kWideNodeTriangles = 32768;
 int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
 int default_bvh_width(Isa isa, std::size_t triangles);
 
-// The table for (isa, width); the ISA must be supported and the width one of bvh_widths(isa).
+// Whether the closest-hit traversal calls the float `mt` leaf kernel directly (inlined) instead of
+// through the kernel table, on a CPU whose cpuid vendor is `vendor`: AVX-512 on Intel only, as
+// measured (docs/benchmarks.md, "The leaf kernel called directly"): on the Xeon of 2026-12-01
+// incoherent rays +5 % on the 1M sphere, on the AMD Zen 5 of 2026-11-22 −4 %. Other ISAs have no
+// direct form. Same results either way.
+bool default_direct_leaf(Isa isa, std::string_view vendor);
+
+// The table for (isa, width), with the direct leaf call where `direct_leaf` and the ISA has one;
+// the ISA must be supported and the width one of bvh_widths(isa). The two-argument form uses
+// default_direct_leaf for this CPU.
+const BvhKernels& bvh_kernels(Isa isa, int width, bool direct_leaf);
 const BvhKernels& bvh_kernels(Isa isa, int width);
 
-namespace scalar { const BvhKernels* bvh_kernels(int width); }
-namespace avx2 { const BvhKernels* bvh_kernels(int width); }
-namespace avx512 { const BvhKernels* bvh_kernels(int width); }
+namespace scalar { const BvhKernels* bvh_kernels(int width, bool direct_leaf); }
+namespace avx2 { const BvhKernels* bvh_kernels(int width, bool direct_leaf); }
+namespace avx512 { const BvhKernels* bvh_kernels(int width, bool direct_leaf); }
 
 }  // namespace rayvec

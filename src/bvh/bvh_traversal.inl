@@ -74,7 +74,17 @@ RAYVEC_INLINE RayBoxes<B, Forward> ray_boxes(const Ray& ray, float eps) {
 RAYVEC_INLINE uint32_t leaf_begin(uint32_t ref) { return (ref >> 5) & (kMaxLeafBegin - 1); }
 RAYVEC_INLINE uint32_t leaf_end(uint32_t ref) { return leaf_begin(ref) + (ref & 31u) + 1; }
 
-template <class B, bool Forward>
+// How the closest-hit traversal intersects a leaf: through the kernel table (any intersector), or,
+// where an ISA unit defines such a policy, by calling its float `mt` kernel directly, inlined
+// (DirectMtLeaf, bvh_traversal_avx512.cpp). Both give the table's results.
+struct TableLeaf {
+  static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
+                                    uint32_t end, const Ray& ray, Hit& hit) {
+    k.closest(tris, begin, end, ray, hit);
+  }
+};
+
+template <class B, bool Forward, class Leaf>
 void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                       const Ray& ray, Hit& hit, uint32_t start) {
   constexpr int N = B::N;
@@ -121,7 +131,7 @@ void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const Tr
         continue;
       }
     } else if (ref != kEmptyRef) {
-      kernels.closest(tris, leaf_begin(ref), leaf_end(ref), ray, hit);
+      Leaf::closest(kernels, tris, leaf_begin(ref), leaf_end(ref), ray, hit);
       if (hit.t < tmax) tmax = hit.t;
     }
     // pop, dropping entries now behind the nearest hit
@@ -135,18 +145,18 @@ void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const Tr
 }
 
 // Closest hit in the subtree `start` (0 = the whole tree).
-template <class B>
+template <class B, class Leaf = TableLeaf>
 RAYVEC_INLINE void bvh_closest_from(const BvhArrays& bvh, const TriangleArrays& tris,
                                     const TriangleKernels& kernels, const Ray& ray, Hit& hit,
                                     uint32_t start) {
-  if (ray.tmin >= 0.0f) bvh_closest_impl<B, true>(bvh, tris, kernels, ray, hit, start);
-  else bvh_closest_impl<B, false>(bvh, tris, kernels, ray, hit, start);
+  if (ray.tmin >= 0.0f) bvh_closest_impl<B, true, Leaf>(bvh, tris, kernels, ray, hit, start);
+  else bvh_closest_impl<B, false, Leaf>(bvh, tris, kernels, ray, hit, start);
 }
 
-template <class B>
+template <class B, class Leaf = TableLeaf>
 void bvh_closest(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                  const Ray& ray, Hit& hit) {
-  bvh_closest_from<B>(bvh, tris, kernels, ray, hit, 0);
+  bvh_closest_from<B, Leaf>(bvh, tris, kernels, ray, hit, 0);
 }
 
 template <class B, bool Forward>

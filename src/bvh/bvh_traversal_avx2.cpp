@@ -25,7 +25,7 @@ constinit const BvhKernels k16{Isa::avx2, 16, &bvh_closest<BoxLanes16>, &bvh_occ
                                &bvh_closest_packet<BoxLanes16, PacketLanes8>, 8};
 }  // namespace
 
-const BvhKernels* bvh_kernels(int width) {
+const BvhKernels* bvh_kernels(int width, bool /*direct_leaf: AVX-512 only*/) {
   switch (width) {
     case 8: return &k8;
     case 16: return &k16;

@@ -18,17 +18,36 @@ constexpr Isa kThisIsa = Isa::avx512;
 #include "bvh/bvh_packet.inl"
 
 namespace {
+// The closest-hit traversal's leaves by this unit's float `mt` kernel, called directly (inlined:
+// no call through the table, so the traversal's ray registers are not saved around it) when the
+// table is that kernel's; other tables through the table. The rays reaching a leaf are finite
+// (bvh.cpp rejects the others), so skipping the table entry's finite_ray test changes nothing.
+struct DirectMtLeaf {
+  static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
+                                    uint32_t end, const Ray& ray, Hit& hit) {
+    if (k.intersector != Intersector::mt || k.isa != kThisIsa) return k.closest(tris, begin, end, ray, hit);
+    if (ray.tmin == 0.0f) closest_mt_float_rays<vfloat, true, 1>(tris, begin, end, &ray, &hit);
+    else closest_mt_float_rays<vfloat, false, 1>(tris, begin, end, &ray, &hit);
+  }
+};
+
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
 constinit const BvhKernels k8{Isa::avx512, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
                               &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16};
 constinit const BvhKernels k16{Isa::avx512, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>,
                                &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16};
+constinit const BvhKernels k8_direct{Isa::avx512, 8, &bvh_closest<BoxLanes8, DirectMtLeaf>,
+                                     &bvh_occluded<BoxLanes8>,
+                                     &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16};
+constinit const BvhKernels k16_direct{Isa::avx512, 16, &bvh_closest<BoxLanes16, DirectMtLeaf>,
+                                      &bvh_occluded<BoxLanes16>,
+                                      &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16};
 }  // namespace
 
-const BvhKernels* bvh_kernels(int width) {
+const BvhKernels* bvh_kernels(int width, bool direct_leaf) {
   switch (width) {
-    case 8: return &k8;
-    case 16: return &k16;
+    case 8: return direct_leaf ? &k8_direct : &k8;
+    case 16: return direct_leaf ? &k16_direct : &k16;
     default: return nullptr;
   }
 }

@@ -17,7 +17,7 @@ constinit const BvhKernels k8{Isa::scalar, 8, &bvh_closest<BoxLanes<8>>, &bvh_oc
                               nullptr, 0};
 }  // namespace
 
-const BvhKernels* bvh_kernels(int width) {
+const BvhKernels* bvh_kernels(int width, bool /*direct_leaf: AVX-512 only*/) {
   switch (width) {
     case 4: return &k4;
     case 8: return &k8;

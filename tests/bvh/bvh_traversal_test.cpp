@@ -39,6 +39,7 @@ class BvhTraversal : public test::BvhCaseTest {
       options.leaves_from_kernel = false;
     }
     options.width = GetParam().width;
+    options.direct_leaf = direct_leaf_;
     const Bvh bvh(mesh, config(), options);
     const HitFilter odd_only{[](const void*, int32_t id) { return id % 2 == 0; }, nullptr};
     int hits = 0;
@@ -60,11 +61,44 @@ class BvhTraversal : public test::BvhCaseTest {
     }
     if (mesh.size() > 0 && rays.size() > 100) EXPECT_GT(hits, 0) << "the scene tests nothing";
   }
+
+  int direct_leaf_ = -1;  // BvhOptions::direct_leaf of expect_same's Bvh
 };
 
 TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
   expect_same(test::random_soup(2000, 0.1f, 1), test::random_rays(1500, 1.5f, 2));
   expect_same(test::random_soup(500, 0.6f, 3), test::random_rays(1000, 1.2f, 4));
+}
+
+// The closest-hit traversal's two leaf calls — through the kernel table, and the float `mt`
+// kernel called directly (AVX-512; the default on Intel) — both equal brute force, with tmin < 0,
+// = 0 and > 0 (the direct call picks the kernel's tmin = 0 form itself); on AVX-512 they are two
+// different traversal functions, elsewhere the same one.
+TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
+  std::vector<Ray> rays = test::random_rays(1500, 1.5f, 21);
+  for (std::size_t i = 0; i < rays.size(); ++i) rays[i].tmin = i % 3 == 0 ? 0.0f : (i % 3 == 1 ? 0.05f : -0.2f);
+  for (const int direct : {0, 1}) {
+    direct_leaf_ = direct;
+    expect_same(test::random_soup(2500, 0.1f, 22), rays);
+    expect_same(test::sphere(1.0f, 30, 40), rays);
+  }
+  BvhOptions table, direct;
+  table.width = direct.width = GetParam().width;
+  table.direct_leaf = 0;
+  direct.direct_leaf = 1;
+  const TriangleMesh one = test::random_soup(10, 0.1f, 23);
+  const Bvh a(one, config(), table), b(one, config(), direct);
+  if (GetParam().isa == Isa::avx512) EXPECT_NE(a.traversal().closest, b.traversal().closest);
+  else EXPECT_EQ(a.traversal().closest, b.traversal().closest);
+}
+
+TEST(BvhTraversalRule, DirectLeafCallOnIntelAvx512Only) {
+  EXPECT_TRUE(default_direct_leaf(Isa::avx512, "GenuineIntel"));
+  for (const char* other : {"AuthenticAMD", "HygonGenuine", ""}) EXPECT_FALSE(default_direct_leaf(Isa::avx512, other));
+  for (const char* vendor : {"GenuineIntel", "AuthenticAMD"}) {
+    EXPECT_FALSE(default_direct_leaf(Isa::avx2, vendor));
+    EXPECT_FALSE(default_direct_leaf(Isa::scalar, vendor));
+  }
 }
 
 TEST_P(BvhTraversal, MatchesBruteForceWithLargeLeavesAndFewBins) {
