@@ -25,6 +25,7 @@ struct Options {
   bool json = false, vs_embree = false;
   int repeats = 5, width = 0;
   int max_leaf = 0, leaf_block = 0;  // 0: the builder's defaults
+  int direct_leaf = -1;              // -1: default_direct_leaf
 };
 
 void parse_size(const std::string& s, int& w, int& h) {
@@ -96,6 +97,8 @@ int run(const Options& o) {
     bvh_options.sah.max_leaf = uint32_t(o.max_leaf);
     bvh_options.leaves_from_kernel = false;
   }
+  if (o.direct_leaf < -1 || o.direct_leaf > 1) throw InputError("--direct-leaf: must be -1, 0 or 1");
+  bvh_options.direct_leaf = o.direct_leaf;
   if (o.leaf_block != 0) {
     if (o.leaf_block < 1 || o.leaf_block > 32) throw InputError("--leaf-block: must be 1 to 32");
     bvh_options.sah.leaf_block = uint32_t(o.leaf_block);
@@ -126,13 +129,13 @@ int run(const Options& o) {
 
   if (o.json) {
     std::printf("{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
-                "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"build_s\":%.6f,"
+                "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,\"build_s\":%.6f,"
                 "\"bytes_per_tri\":%.3f,",
                 json_string(o.model).c_str(), mesh.size(), width, height,
                 json_string(cpu_features().brand).c_str(), json_string(isa_name(config.isa)).c_str(),
                 json_string(intersector_name(config.intersector)).c_str(), threads,
                 bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh.tree().width(),
-                build_s, bytes_per_tri);
+                bvh.traversal().direct_leaf ? "true" : "false", build_s, bytes_per_tri);
     print_sets_json(run);
     if (o.vs_embree) {
       std::printf(",\"embree\":{\"build_s\":%.6f,\"max_isa\":\"%s\",", embree_build_s, embree_isa);
@@ -152,9 +155,10 @@ int run(const Options& o) {
               bench_uses_thread_cpu_time() ? "thread CPU-time" : "wall");
   std::printf("cpu: %s; isa: %s; intersector: %s; threads: %d\n", cpu_features().brand.c_str(),
               isa_name(config.isa), intersector_name(config.intersector), threads);
-  std::printf("bvh: %d-wide, %u nodes, %u leaves, depth %u; build %.4f s; %.1f bytes/triangle "
-              "(nodes %.1f + triangles %.1f)\n",
+  std::printf("bvh: %d-wide, %u nodes, %u leaves, depth %u, leaf kernel %s; build %.4f s; %.1f "
+              "bytes/triangle (nodes %.1f + triangles %.1f)\n",
               bvh.tree().width(), bvh.tree().node_count(), bvh.tree().leaf_count(), bvh.tree().depth(),
+              bvh.traversal().direct_leaf ? "called directly" : "through the kernel table",
               build_s, bytes_per_tri, double(bvh.tree().bytes()) / tris,
               double(bvh.triangles().bytes()) / tris);
   if (o.vs_embree)
@@ -197,7 +201,10 @@ void register_bench_rays_command(Command& bench) {
               "triangles up, else 8; AVX-512 on Intel: 16 at every size)")
       .option("--max-leaf", o.max_leaf, "tuning: most triangles per BVH leaf (0 = default)")
       .option("--leaf-block", o.leaf_block,
-              "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)");
+              "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)")
+      .option("--direct-leaf", o.direct_leaf,
+              "tuning: closest-hit traversal calls the mt leaf kernel directly (1) or through the "
+              "kernel table (0); -1 = default (directly on Intel's AVX-512)");
   add_trace_options(cmd, o.trace, false);
   cmd.footer(
       "Ray sets (exact definitions in src/bench/ray_sets.h): primary = a pinhole camera framing the\n"

@@ -27,6 +27,7 @@ struct BvhKernels {
   void (*closest_packet)(const BvhArrays& bvh, const TriangleArrays& tris,
                          const TriangleKernels& kernels, const Ray* rays, Hit* hits, unsigned active);
   int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
+  bool direct_leaf = false;  // closest() calls the float `mt` leaf kernel directly (default_direct_leaf)
 };
 
 // The node widths an ISA has traversal code for.

@@ -38,10 +38,10 @@ constinit const BvhKernels k16{Isa::avx512, 16, &bvh_closest<BoxLanes16>, &bvh_o
                                &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16};
 constinit const BvhKernels k8_direct{Isa::avx512, 8, &bvh_closest<BoxLanes8, DirectMtLeaf>,
                                      &bvh_occluded<BoxLanes8>,
-                                     &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16};
+                                     &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16, true};
 constinit const BvhKernels k16_direct{Isa::avx512, 16, &bvh_closest<BoxLanes16, DirectMtLeaf>,
                                       &bvh_occluded<BoxLanes16>,
-                                      &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16};
+                                      &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16, true};
 }  // namespace
 
 const BvhKernels* bvh_kernels(int width, bool direct_leaf) {
