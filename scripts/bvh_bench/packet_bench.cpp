@@ -1,7 +1,7 @@
 // Packet experiment harness: times the bench's primary rays as 4×4-tile packets (as `rayvec bench
 // rays` row primary_packet) through the tree's own packet traversal ("tree": librayvec.a's
 // BvhKernels table; "stream": Bvh::closest_stream, as the bench calls it), through each variant
-// compiled into this binary (packet_variant_avx512.cpp, built by packet_build.sh from the current
+// compiled into this binary (packet_variant.cpp, built by packet_build.sh from the current
 // sources or a copy of bvh_packet.inl) and through Embree's rtcIntersect16 ("embree"), interleaved
 // round by round on the thread's CPU-time clock, one thread. Prints per variant the median, its
 // ratio to "tree" and to Embree, and the range of the per-round ratios to Embree; checks every
@@ -10,7 +10,7 @@
 // is timed with them; variants named old* (a copy of an older bvh_packet.inl) get the older
 // contract's caller work instead, as Bvh::closest_stream did it: hits reset, untraceable lanes out.
 //   packet_bench MODEL.obj [ROUNDS]      RV_SIDE=N: N×N rays instead of 1024×1024
-// RV_ISA=avx2: an AVX2 tree, Embree capped at AVX2, variants from packet_variant_avx2.cpp (built by
+// RV_ISA=avx2: an AVX2 tree, Embree capped at AVX2, AVX2 variants of packet_variant.cpp (built by
 // RV_ISA=avx2 packet_build.sh; each 4×4 tile as two 8-ray packets).
 #include <time.h>
 

@@ -4,7 +4,7 @@
 # "tree" for the tree's own). Not part of the product build.
 #   scripts/bvh_bench/packet_build.sh BUILD_DIR fwd=/tmp/fwd.inl lanes4=tree:-DK=4 ...
 #   BUILD_DIR/packet_bench/packet_bench /tmp/lead/sphere4k.obj 9
-# RV_ISA=avx2 (here and when running packet_bench): AVX2 variants (packet_variant_avx2.cpp).
+# RV_ISA=avx2 (here and when running packet_bench): AVX2 variants (packet_variant.cpp, -DRV_AVX2).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/../../src" && pwd)
@@ -13,7 +13,11 @@ shift
 out=${OUT:-$build/packet_bench}
 mkdir -p "$out"
 isa="-mavx2 -mfma -mbmi -mbmi2 -mlzcnt -mf16c -mpopcnt -ffp-contract=off -Wno-maybe-uninitialized"
-[ "${RV_ISA:-avx512}" = avx512 ] && isa="$isa -mavx512f -mavx512dq -mavx512bw -mavx512vl -mavx512cd"
+if [ "${RV_ISA:-avx512}" = avx512 ]; then
+  isa="$isa -mavx512f -mavx512dq -mavx512bw -mavx512vl -mavx512cd"
+else
+  isa="$isa -DRV_AVX2"
+fi
 objs=""
 pids=""
 i=0
@@ -25,7 +29,7 @@ for spec in "$@"; do
   case "$rest" in *:*) flags=${rest#*:} ;; esac
   [ "$inl" = tree ] && inl="$src/bvh/bvh_packet.inl"
   g++ -std=c++20 -O3 $isa -I"$src" -DRV_PACKET_INL="\"$inl\"" -DRV_VARIANT_NAME="\"$name\"" \
-      -DRV_VARIANT_NS=v$i $flags $RV_CXXFLAGS -c "$here/packet_variant_${RV_ISA:-avx512}.cpp" -o "$out/v$i.o" &
+      -DRV_VARIANT_NS=v$i $flags $RV_CXXFLAGS -c "$here/packet_variant.cpp" -o "$out/v$i.o" &
   pids="$pids $!"
   objs="$objs $out/v$i.o"
   i=$((i + 1))
