@@ -96,8 +96,9 @@ RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& 
 // every child against the whole packet (B::hits_hull) instead of one test a child. A camera
 // packet enters few of a wide node's children, so this skips most of the per-child tests. On the
 // Xeon of 2026-12-01 (packet_bench, same process, 1 thread) primary packets gained 13 % (4k
-// sphere), 16 % (1M sphere) and 26 % (Wuson) with AVX-512, 7 % and 12 % (spheres) with AVX2. It only filters: a child it passes is tested lane by lane as
-// before, so the results are unchanged bit for bit.
+// sphere), 16 % (1M sphere) and 26 % (Wuson) with AVX-512, 7 % and 12 % (spheres) with AVX2.
+// It only filters: a child it passes is tested lane by lane as before, so the results are
+// unchanged bit for bit.
 template <class B, bool WithHull>
 struct PacketChildren;
 template <class B>
