@@ -129,7 +129,8 @@ int run(const Options& o) {
 
   if (o.json) {
     std::printf("{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
-                "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,\"build_s\":%.6f,"
+                "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
+                "\"build_s\":%.6f,"
                 "\"bytes_per_tri\":%.3f,",
                 json_string(o.model).c_str(), mesh.size(), width, height,
                 json_string(cpu_features().brand).c_str(), json_string(isa_name(config.isa)).c_str(),

@@ -111,7 +111,8 @@ struct PacketForward {
   // the same near and far planes.
   RAYVEC_INLINE PacketHull hull(unsigned lanes) const {
     static_assert(Uniform, "a hull needs the same near and far planes in every lane");
-    const T nr[3] = {nrx, nry, nrz}, fr[3] = {frx, fry, frz}, kn[3] = {knx, kny, knz}, kf[3] = {kfx, kfy, kfz};
+    const T nr[3] = {nrx, nry, nrz}, fr[3] = {frx, fry, frz};
+    const T kn[3] = {knx, kny, knz}, kf[3] = {kfx, kfy, kfz};
     const int near[3] = {nx, ny, nz}, far[3] = {fx, fy, fz};
     PacketHull h;
     for (int a = 0; a < 3; ++a) {
