@@ -21,6 +21,8 @@ namespace {
 // of a random ray up to a factor; the leaves are the same either way).
 enum class OpenRule { largest_area, most_triangles };
 
+constexpr std::size_t kParallelCollapseNodes = 1u << 15;  // binary nodes
+
 template <int N>
 class Collapser {
  public:
@@ -155,9 +157,16 @@ LargeBuffer collapse(const BinaryBvh& tree, uint32_t& count, uint32_t& depth, ui
                      std::size_t& bytes) {
   double by_area = 0, by_count = 0;
   uint32_t depth_count = 0, leaves_count = 0;
-  std::vector<WideNode<N>> nodes = Collapser<N>(tree, OpenRule::largest_area).run(depth, leaves, by_area);
-  std::vector<WideNode<N>> other =
-      Collapser<N>(tree, OpenRule::most_triangles).run(depth_count, leaves_count, by_count);
+  std::vector<WideNode<N>> nodes, other;
+  // the two collapses are independent: one thread each for large trees (4.5 ms each on 1M
+  // triangles; small trees would wait longer for the second thread than the work takes)
+#pragma omp parallel sections if (tree.nodes.size() >= kParallelCollapseNodes)
+  {
+#pragma omp section
+    nodes = Collapser<N>(tree, OpenRule::largest_area).run(depth, leaves, by_area);
+#pragma omp section
+    other = Collapser<N>(tree, OpenRule::most_triangles).run(depth_count, leaves_count, by_count);
+  }
   if (by_count < by_area) {  // see OpenRule
     nodes = std::move(other);
     depth = depth_count;
