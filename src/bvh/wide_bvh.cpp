@@ -179,6 +179,16 @@ LargeBuffer collapse(const BinaryBvh& tree, uint32_t& count, uint32_t& depth, ui
   return p;
 }
 
+// BvhArrays::root_lo/hi: the union of the root node's child boxes (unused slots are empty boxes).
+template <int N>
+void root_box(BvhArrays& a) {
+  const WideNode<N>& root = static_cast<const WideNode<N>*>(a.nodes)[0];
+  for (int axis = 0; axis < 3; ++axis) {
+    a.root_lo[axis] = *std::min_element(root.bounds[axis], root.bounds[axis] + N);
+    a.root_hi[axis] = *std::max_element(root.bounds[axis + 3], root.bounds[axis + 3] + N);
+  }
+}
+
 }  // namespace
 
 WideBvh::WideBvh(const BinaryBvh& tree, int width) {
@@ -195,16 +205,10 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width) {
   storage_ = std::move(p);
   arrays_ = BvhArrays{storage_.get(), uint32_t(width), count, depth_ * uint32_t(width - 1) + 1,
                       kDefaultBoxEpsilon, {}, {}};
-  // the root's rows: bounds[0..2][k] = lo, bounds[3..5][k] = hi of child k, k < width, row-major
-  const float* rows = static_cast<const float*>(storage_.get());
-  for (int a = 0; a < 3; ++a) {
-    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    for (int k = 0; k < width; ++k) {
-      lo = std::min(lo, rows[a * width + k]);
-      hi = std::max(hi, rows[(a + 3) * width + k]);
-    }
-    arrays_.root_lo[a] = lo;
-    arrays_.root_hi[a] = hi;
+  switch (width) {
+    case 4: root_box<4>(arrays_); break;
+    case 8: root_box<8>(arrays_); break;
+    default: root_box<16>(arrays_); break;
   }
 }
 
