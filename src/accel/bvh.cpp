@@ -17,6 +17,14 @@ bool traceable(const Ray& r) {
          !std::isnan(r.tmin) && !std::isnan(r.tmax);
 }
 
+// Whether the closest-hit traversal calls the leaf kernel directly: only the float mt kernel has
+// a direct form.
+bool direct_leaf(const TraceConfig& config, const BvhOptions& options) {
+  if (config.intersector != Intersector::mt) return false;
+  if (options.direct_leaf < 0) return default_direct_leaf(config.isa, cpu_features().vendor);
+  return options.direct_leaf != 0;
+}
+
 }  // namespace
 
 Bvh::Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& options)
@@ -24,8 +32,7 @@ Bvh::Bvh(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& 
       kernels_(&triangle_kernels(config.isa, config.intersector)),
       traversal_(&bvh_kernels(config.isa,
                               options.width ? options.width : default_bvh_width(config.isa, mesh.size()),
-                              options.direct_leaf < 0 ? default_direct_leaf(config.isa, cpu_features().vendor)
-                                                      : options.direct_leaf != 0)) {
+                              direct_leaf(config, options))) {
   SahConfig sah = options.sah;
   if (options.leaves_from_kernel && kernels_->width >= 8) {
     sah.leaf_block = uint32_t(kernels_->width);

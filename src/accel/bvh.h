@@ -21,7 +21,8 @@ struct BvhOptions {
   int width = 0;  // children per node: 0 = default_bvh_width(isa, triangles)
   float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
   // The closest-hit traversal calls the float `mt` leaf kernel directly (1) or through the kernel
-  // table (0); −1 = default_direct_leaf(isa, this CPU's vendor). Same results either way.
+  // table (0); −1 = default_direct_leaf(isa, this CPU's vendor). Other intersectors always use
+  // the table. Same results either way.
   int direct_leaf = -1;
 };
 
