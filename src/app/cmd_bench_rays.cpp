@@ -3,9 +3,12 @@
 // same run (issue 3). The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "accel/bvh.h"
 #include "app/command_line.h"
@@ -26,7 +29,23 @@ struct Options {
   int repeats = 5, width = 0;
   int max_leaf = 0, leaf_block = 0;  // 0: the builder's defaults
   int direct_leaf = -1;              // -1: default_direct_leaf
+  int builds = 3;                    // builds timed; the median is reported
 };
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+std::string json_array(const std::vector<double>& v) {
+  std::string s = "[";
+  char buf[32];
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    std::snprintf(buf, sizeof buf, "%s%.6f", k ? "," : "", v[k]);
+    s += buf;
+  }
+  return s + "]";
+}
 
 void parse_size(const std::string& s, int& w, int& h) {
   const auto x = s.find('x');
@@ -69,6 +88,7 @@ int run(const Options& o) {
   int width = 0, height = 0;
   parse_size(o.size, width, height);
   if (o.repeats < 1) throw InputError("--repeats: must be at least 1");
+  if (o.builds < 1 || o.builds > 100) throw InputError("--builds: must be 1 to 100");
   if (o.vs_embree && !embree_available())
     throw InputError("--vs-embree: this rayvec was built without Embree 3 (install libembree-dev "
                      "and re-run CMake)");
@@ -107,19 +127,32 @@ int run(const Options& o) {
   // start the OpenMP threads before timing (Embree's device starts its threads before its build too)
 #pragma omp parallel
   { (void)omp_get_thread_num(); }
-  const auto t0 = std::chrono::steady_clock::now();
-  const Bvh bvh(mesh, config, bvh_options);
-  const double build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const double tris = double(mesh.size() ? mesh.size() : 1);
-  const double bytes_per_tri = double(bvh.bytes()) / tris;
-
-  const auto ours = make_accelerator_tracer(bvh);
-  const BenchRays rays = make_bench_rays(mesh, width, height, *ours);
-  double embree_build_s = 0;
+  // `builds` builds of each, interleaved (rayvec, Embree, rayvec, ...) so that both share the VM's
+  // phases; the previous structure is freed before the next build; the last one is traced
+  std::unique_ptr<Bvh> bvh;
   std::unique_ptr<RayTracer> embree;
   // the rival gets the same ISA: Embree's widest at most rayvec's (it has no scalar code: SSE2)
   const char* embree_isa = config.isa == Isa::avx512 ? "avx512" : (config.isa == Isa::avx2 ? "avx2" : "sse2");
-  if (o.vs_embree) embree = make_embree_tracer(mesh, threads, embree_isa, embree_build_s);
+  std::vector<double> build_runs, embree_build_runs;
+  for (int b = 0; b < o.builds; ++b) {
+    bvh.reset();
+    const auto t0 = std::chrono::steady_clock::now();
+    bvh = std::make_unique<Bvh>(mesh, config, bvh_options);
+    build_runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    if (o.vs_embree) {
+      embree.reset();
+      double s = 0;
+      embree = make_embree_tracer(mesh, threads, embree_isa, s);
+      embree_build_runs.push_back(s);
+    }
+  }
+  const double build_s = median(build_runs);
+  const double embree_build_s = o.vs_embree ? median(embree_build_runs) : 0.0;
+  const double tris = double(mesh.size() ? mesh.size() : 1);
+  const double bytes_per_tri = double(bvh->bytes()) / tris;
+
+  const auto ours = make_accelerator_tracer(*bvh);
+  const BenchRays rays = make_bench_rays(mesh, width, height, *ours);
   std::vector<const RayTracer*> tracers{ours.get()};
   if (embree) tracers.push_back(embree.get());
   const std::vector<TracerRun> runs = run_bench_rays(tracers, rays, o.repeats);
@@ -130,16 +163,18 @@ int run(const Options& o) {
   if (o.json) {
     std::printf("{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
                 "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
-                "\"build_s\":%.6f,"
+                "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
                 "\"bytes_per_tri\":%.3f,",
                 json_string(o.model).c_str(), mesh.size(), width, height,
                 json_string(cpu_features().brand).c_str(), json_string(isa_name(config.isa)).c_str(),
                 json_string(intersector_name(config.intersector)).c_str(), threads,
-                bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh.tree().width(),
-                bvh.traversal().direct_leaf ? "true" : "false", build_s, bytes_per_tri);
+                bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
+                bvh->traversal().direct_leaf ? "true" : "false", o.builds, build_s,
+                json_array(build_runs).c_str(), bytes_per_tri);
     print_sets_json(run);
     if (o.vs_embree) {
-      std::printf(",\"embree\":{\"build_s\":%.6f,\"max_isa\":\"%s\",", embree_build_s, embree_isa);
+      std::printf(",\"embree\":{\"build_s\":%.6f,\"build_runs_s\":%s,\"max_isa\":\"%s\",",
+                  embree_build_s, json_array(embree_build_runs).c_str(), embree_isa);
       print_sets_json(rival_run);
       std::printf(",\"mismatches\":{\"primary\":%llu,\"primary_packet\":%llu,\"shadow\":%llu,"
                   "\"incoherent\":%llu}}",
@@ -150,18 +185,19 @@ int run(const Options& o) {
     return 0;
   }
   std::printf("model: %s, %zu triangles; %dx%d; median of %d runs after a warm-up%s (%s clock; "
-              "builds: wall clock)\n",
+              "builds: wall clock, median of %d%s)\n",
               o.model.c_str(), mesh.size(), width, height, o.repeats,
               embree ? ", interleaved with embree's" : "",
-              bench_uses_thread_cpu_time() ? "thread CPU-time" : "wall");
+              bench_uses_thread_cpu_time() ? "thread CPU-time" : "wall", o.builds,
+              embree ? " interleaved" : "");
   std::printf("cpu: %s; isa: %s; intersector: %s; threads: %d\n", cpu_features().brand.c_str(),
               isa_name(config.isa), intersector_name(config.intersector), threads);
   std::printf("bvh: %d-wide, %u nodes, %u leaves, depth %u, leaf kernel %s; build %.4f s; %.1f "
               "bytes/triangle (nodes %.1f + triangles %.1f)\n",
-              bvh.tree().width(), bvh.tree().node_count(), bvh.tree().leaf_count(), bvh.tree().depth(),
-              bvh.traversal().direct_leaf ? "called directly" : "through the kernel table",
-              build_s, bytes_per_tri, double(bvh.tree().bytes()) / tris,
-              double(bvh.triangles().bytes()) / tris);
+              bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), bvh->tree().depth(),
+              bvh->traversal().direct_leaf ? "called directly" : "through the kernel table",
+              build_s, bytes_per_tri, double(bvh->tree().bytes()) / tris,
+              double(bvh->triangles().bytes()) / tris);
   if (o.vs_embree)
     std::printf("embree: max_isa=%s, RTC_BUILD_QUALITY_HIGH build %.4f s (rayvec/embree build time "
                 "%.2f)\n",
@@ -197,6 +233,9 @@ void register_bench_rays_command(Command& bench) {
             "exit status 2 when rayvec was built without Embree")
       .option("--repeats", o.repeats, "timed runs per ray set after one warm-up; the median is "
                                       "reported (default 5)")
+      .option("--builds", o.builds,
+              "BVH builds timed (with --vs-embree: Embree's builds interleaved with them); the "
+              "median is reported, the last tree is traced (default 3)")
       .option("--bvh-width", o.width,
               "children per BVH node: 4, 8 or 16; 0 = the default (AVX-512 and AVX2: 16 from 32768 "
               "triangles up, else 8; AVX-512 on Intel: 16 at every size)")

@@ -2,8 +2,10 @@
 // issue specifies, packets agree with single rays, and bad usage exits 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "bench/ray_tracer.h"
 #include "kernels/isa.h"
@@ -39,6 +41,28 @@ TEST(BenchRays, TinyRunPrintsJsonWithEverySetAndPacketsMatchSingleRays) {
   EXPECT_NE(field(r.out, "primary", "hits"), "0");
   EXPECT_EQ(field(r.out, "primary", "checksum"), field(r.out, "primary_packet", "checksum"));
   EXPECT_EQ(field(r.out, "shadow", "rays"), field(r.out, "primary", "hits"));
+}
+
+// --builds N times N builds and reports their median as build_s (the upper median for even N).
+TEST(BenchRays, BuildsReportsEveryBuildAndTheirMedian) {
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays_builds"));
+  const auto r = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --builds 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"builds\":4,"), std::string::npos) << r.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("\"build_s\":([0-9.]+),\"build_runs_s\":\\[([^\\]]*)\\]")))
+      << r.out;
+  std::vector<double> runs;
+  const std::string list = m[2].str();
+  for (std::size_t at = 0; at < list.size();) {
+    std::size_t used = 0;
+    runs.push_back(std::stod(list.substr(at), &used));
+    at += used + 1;
+  }
+  ASSERT_EQ(runs.size(), 4u) << list;
+  std::sort(runs.begin(), runs.end());
+  EXPECT_DOUBLE_EQ(std::stod(m[1].str()), runs[2]);
+  EXPECT_EQ(test::run_cli("bench rays " + obj + " --size 4x4 --builds 0").status, 2);
 }
 
 TEST(BenchRays, EveryIsaGivesTheSameChecksums) {
