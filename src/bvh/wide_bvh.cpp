@@ -11,23 +11,19 @@
 namespace rayvec {
 namespace {
 
-// Which inner child a wide node opens next (the greedy collapse in fill()): the one with the largest
-// area (the SAH's choice for the node itself) or the one with the most triangles (keeps the subtrees
-// left below a node of similar size, so the bottom levels can come out full). Neither wins on every
-// tree: on the bench meshes the count rule cut node visits per ray 2.5-6 % for AVX-512's 16-wide
-// trees and raised them 4-27 % for 8-wide trees and 7 % for AVX2's 16-wide tree of the 1M sphere
-// (docs/benchmarks.md, "An Intel Xeon, 2026-12-01"). So WideBvh collapses both ways and keeps the
-// tree of the lower SAH node cost, Σ over wide nodes of their box's area (the expected node visits
-// of a random ray up to a factor; the leaves are the same either way).
-enum class OpenRule { largest_area, most_triangles };
+// Why both rules of CollapseRule: neither wins on every tree. On the bench meshes the count rule cut
+// node visits per ray 2.5-6 % for AVX-512's 16-wide trees and raised them 4-27 % for 8-wide trees
+// and 7 % for AVX2's 16-wide tree of the 1M sphere (docs/benchmarks.md, "An Intel Xeon,
+// 2026-12-01"). So by default WideBvh collapses both ways and keeps the tree of the lower SAH node
+// cost (the expected node visits of a random ray up to a factor; the leaves are the same either way).
 
 constexpr std::size_t kParallelCollapseNodes = 1u << 15;  // binary nodes
 
 template <int N>
 class Collapser {
  public:
-  Collapser(const BinaryBvh& tree, OpenRule rule) : tree_(tree), rule_(rule) {
-    if (rule == OpenRule::most_triangles) count_triangles();
+  Collapser(const BinaryBvh& tree, CollapseRule rule) : tree_(tree), rule_(rule) {
+    if (rule == CollapseRule::most_triangles) count_triangles();
   }
 
   std::vector<WideNode<N>> run(uint32_t& depth, uint32_t& leaves, double& sah_cost) {
@@ -99,9 +95,9 @@ class Collapser {
       }
     }
   }
-  // The priority of opening binary node k (see OpenRule).
+  // The priority of opening binary node k (see CollapseRule).
   float open_priority(uint32_t k) const {
-    if (rule_ == OpenRule::most_triangles) return float(triangles_[k]);
+    if (rule_ == CollapseRule::most_triangles) return float(triangles_[k]);
     return tree_.nodes[k].box.half_area();
   }
 
@@ -144,7 +140,7 @@ class Collapser {
   }
 
   const BinaryBvh& tree_;
-  const OpenRule rule_;
+  const CollapseRule rule_;
   std::vector<uint32_t> triangles_;  // most_triangles only
   std::vector<WideNode<N>> nodes_;
   uint32_t depth_ = 0, leaves_ = 0;
@@ -153,24 +149,30 @@ class Collapser {
 
 // The nodes in a LargeBuffer (huge pages for big trees: fewer TLB misses per node fetch).
 template <int N>
-LargeBuffer collapse(const BinaryBvh& tree, uint32_t& count, uint32_t& depth, uint32_t& leaves,
-                     std::size_t& bytes) {
-  double by_area = 0, by_count = 0;
-  uint32_t depth_count = 0, leaves_count = 0;
-  std::vector<WideNode<N>> nodes, other;
-  // the two collapses are independent: one thread each for large trees (4.5 ms each on 1M
-  // triangles; small trees would wait longer for the second thread than the work takes)
+LargeBuffer collapse(const BinaryBvh& tree, CollapseRule rule, uint32_t& count, uint32_t& depth,
+                     uint32_t& leaves, double& sah_cost, std::size_t& bytes) {
+  std::vector<WideNode<N>> nodes;
+  if (rule != CollapseRule::lower_sah_cost) {
+    nodes = Collapser<N>(tree, rule).run(depth, leaves, sah_cost);
+  } else {
+    double by_count = 0;
+    uint32_t depth_count = 0, leaves_count = 0;
+    std::vector<WideNode<N>> other;
+    // the two collapses are independent: one thread each for large trees (4.5 ms each on 1M
+    // triangles; small trees would wait longer for the second thread than the work takes)
 #pragma omp parallel sections if (tree.nodes.size() >= kParallelCollapseNodes)
-  {
+    {
 #pragma omp section
-    nodes = Collapser<N>(tree, OpenRule::largest_area).run(depth, leaves, by_area);
+      nodes = Collapser<N>(tree, CollapseRule::largest_area).run(depth, leaves, sah_cost);
 #pragma omp section
-    other = Collapser<N>(tree, OpenRule::most_triangles).run(depth_count, leaves_count, by_count);
-  }
-  if (by_count < by_area) {  // see OpenRule
-    nodes = std::move(other);
-    depth = depth_count;
-    leaves = leaves_count;
+      other = Collapser<N>(tree, CollapseRule::most_triangles).run(depth_count, leaves_count, by_count);
+    }
+    if (by_count < sah_cost) {
+      nodes = std::move(other);
+      depth = depth_count;
+      leaves = leaves_count;
+      sah_cost = by_count;
+    }
   }
   bytes = nodes.size() * sizeof(WideNode<N>);
   LargeBuffer p = allocate_large_buffer(bytes);
@@ -191,15 +193,15 @@ void root_box(BvhArrays& a) {
 
 }  // namespace
 
-WideBvh::WideBvh(const BinaryBvh& tree, int width) {
+WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule) {
   if (tree.order.size() >= kMaxLeafBegin)
     throw std::length_error("BVH: at most 2^26 - 1 triangles are supported");
   uint32_t count = 0;
   LargeBuffer p;
   switch (width) {
-    case 4: p = collapse<4>(tree, count, depth_, leaves_, bytes_); break;
-    case 8: p = collapse<8>(tree, count, depth_, leaves_, bytes_); break;
-    case 16: p = collapse<16>(tree, count, depth_, leaves_, bytes_); break;
+    case 4: p = collapse<4>(tree, rule, count, depth_, leaves_, sah_cost_, bytes_); break;
+    case 8: p = collapse<8>(tree, rule, count, depth_, leaves_, sah_cost_, bytes_); break;
+    case 16: p = collapse<16>(tree, rule, count, depth_, leaves_, sah_cost_, bytes_); break;
     default: throw std::invalid_argument("BVH width must be 4, 8 or 16");
   }
   storage_ = std::move(p);

@@ -43,15 +43,20 @@ struct BvhArrays {
   float root_lo[3], root_hi[3];
 };
 
+// How the binary tree is collapsed: greedily, a wide node opening its inner child of the highest
+// priority until it is full — the child of largest surface area (the SAH's choice for the node
+// itself), or the one with the most triangles (keeps the subtrees left below a node of similar size,
+// so the bottom levels can come out full). lower_sah_cost runs both and keeps the tree of the lower
+// sah_node_cost() (on the first one's side when equal).
+enum class CollapseRule { lower_sah_cost, largest_area, most_triangles };
+
 class WideBvh {
  public:
   WideBvh() = default;
   // Collapses `tree` (leaves of at most kMaxLeafTriangles) into nodes of `width` ∈ {4, 8, 16}
-  // children, greedily opening inner children until a node is full — once opening the child of
-  // largest surface area first, once the one with the most triangles — and keeps the tree of lower
-  // SAH node cost (wide_bvh.cpp says why). Throws std::length_error when there are 2^26 or more
-  // triangles.
-  WideBvh(const BinaryBvh& tree, int width);
+  // children by `rule` (wide_bvh.cpp says why the default runs both). Throws std::length_error
+  // when there are 2^26 or more triangles.
+  WideBvh(const BinaryBvh& tree, int width, CollapseRule rule = CollapseRule::lower_sah_cost);
 
   const BvhArrays& arrays() const { return arrays_; }
   int width() const { return int(arrays_.width); }
@@ -59,6 +64,9 @@ class WideBvh {
   uint32_t depth() const { return depth_; }  // levels of wide nodes, the root being level 1
   uint32_t leaf_count() const { return leaves_; }
   std::size_t bytes() const { return bytes_; }
+  // SAH node cost: Σ over wide nodes of the half surface area of the node's box (the union of its
+  // children's boxes), as accumulated in double over float areas.
+  double sah_node_cost() const { return sah_cost_; }
   // Changes the relative widening of ray–box intervals (must stay > 0: with 0, an infinite slab
   // distance times 0 is NaN and the box is missed).
   void set_box_epsilon(float eps) { arrays_.box_epsilon = eps; }
@@ -68,6 +76,7 @@ class WideBvh {
   BvhArrays arrays_{};
   uint32_t depth_ = 0, leaves_ = 0;
   std::size_t bytes_ = 0;
+  double sah_cost_ = 0;
 };
 
 }  // namespace rayvec
