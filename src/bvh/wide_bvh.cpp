@@ -17,7 +17,7 @@ namespace {
 // 2026-12-01"). So by default WideBvh collapses both ways and keeps the tree of the lower SAH node
 // cost (the expected node visits of a random ray up to a factor; the leaves are the same either way).
 
-constexpr std::size_t kParallelCollapseNodes = 1u << 15;  // binary nodes
+constexpr std::size_t kParallelCollapseNodes = 256;  // binary nodes
 
 template <int N>
 class Collapser {

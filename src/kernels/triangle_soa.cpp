@@ -11,7 +11,7 @@
 namespace rayvec {
 namespace {
 
-constexpr std::int64_t kParallelFill = 16384;  // fewer slots: fill on the calling thread
+constexpr std::int64_t kParallelFill = 2048;  // fewer slots: fill on the calling thread
 
 }  // namespace
 
