@@ -3,7 +3,7 @@
 median of each number as the Markdown table of docs/benchmarks.md ("BVH vs Embree").
 
     scripts/bench_rays_table.py RAYVEC_BINARY MESH.obj [MESH.obj ...] [--threads 1 2] [--runs 3]
-                                [--size 1024x1024] [--isa avx2]
+                                [--size 1024x1024] [--isa avx2] [--builds 5]
 
 --isa passes that ISA to rayvec, which caps Embree at it too (AVX2 against AVX2).
 
@@ -22,8 +22,8 @@ SETS = [("primary", "rtcIntersect1"), ("primary_packet", "rtcIntersect16"),
         ("shadow", "rtcOccluded1"), ("incoherent", "rtcIntersect1")]
 
 
-def run(binary, mesh, threads, size, isa):
-    extra = ["--isa", isa] if isa else []
+def run(binary, mesh, threads, size, isa, builds):
+    extra = (["--isa", isa] if isa else []) + ["--builds", str(builds)]
     out = subprocess.run([binary, "bench", "rays", mesh, "--vs-embree", "--json", "--threads",
                           str(threads), "--size", size] + extra, check=True, capture_output=True, text=True)
     return json.loads(out.stdout)
@@ -37,6 +37,7 @@ def main():
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--size", default="1024x1024")
     ap.add_argument("--isa", default="", help="rayvec --isa (default: the best this CPU has)")
+    ap.add_argument("--builds", type=int, default=5, help="builds per run, median reported (bench rays --builds)")
     a = ap.parse_args()
     med = statistics.median
     print("| mesh | triangles | threads | set (Embree call) | rayvec Mrays/s | Embree Mrays/s | ratio | id mismatches |")
@@ -47,7 +48,7 @@ def main():
         by_threads = {t: [] for t in a.threads}
         for _ in range(a.runs):  # interleaved: every round runs each thread count once
             for t in a.threads:
-                by_threads[t].append(run(a.binary, mesh, t, a.size, a.isa))
+                by_threads[t].append(run(a.binary, mesh, t, a.size, a.isa, a.builds))
         name = os.path.basename(mesh)
         if 1 in by_threads and 2 in by_threads:
             pairs = list(zip(by_threads[1], by_threads[2]))
