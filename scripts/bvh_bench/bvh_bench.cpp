@@ -7,7 +7,8 @@
 //   bvh_bench MODEL.obj [ROUNDS] VARIANT...
 //   VARIANT = name:key=value,key=value  (keys: block, max_leaf, trav, bins, width, trv=0|1,
 //             isa=2 for AVX2 instead of AVX-512)
-// trv=1 traverses with the variant traversal compiled into this harness (variant_avx512.cpp), for
+// trv=1 traverses with the variant traversal compiled into this harness (variant_avx512.cpp; with
+// isa=2 its AVX2 copy), for
 // the closest-hit sets and the shadow rays.
 //   bvh_bench MODEL.obj phases [ROUNDS]   build phases (binary SAH, collapse, TriangleSoA fill) at
 //                                         OMP_NUM_THREADS threads: wall and process CPU seconds
@@ -41,6 +42,10 @@ void closest(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKer
              const Ray& ray, Hit& hit);
 bool occluded(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
               const Ray& ray);
+void closest_avx2(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                  const Ray& ray, Hit& hit);
+bool occluded_avx2(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                   const Ray& ray);
 }
 
 namespace {
@@ -240,8 +245,8 @@ int main(int argc, char** argv) {
     const TriangleKernels& kernels = triangle_kernels(v.isa, config.intersector);
     for (std::size_t i = 0; i < shadow.rays.size(); ++i)
       occluded[i] = v.variant_traversal
-                        ? variant::occluded(v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels,
-                                            shadow.rays[i])
+                        ? (v.isa == Isa::avx2 ? variant::occluded_avx2 : variant::occluded)(
+                              v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels, shadow.rays[i])
                         : tk.occluded(v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels,
                                       shadow.rays[i], nullptr);
     return cpu_now() - t0;
@@ -253,7 +258,8 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < set.rays.size(); ++i) {
       Hit h;
       if (v.variant_traversal)
-        variant::closest(v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels, set.rays[i], h);
+        (v.isa == Isa::avx2 ? variant::closest_avx2 : variant::closest)(
+            v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels, set.rays[i], h);
       else
         tk.closest(v.bvh->tree().arrays(), v.bvh->triangles().arrays(), kernels, set.rays[i], h);
       out[i] = h;
