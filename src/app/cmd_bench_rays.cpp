@@ -3,7 +3,6 @@
 // same run (issue 3). The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
 #include <omp.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -31,11 +30,6 @@ struct Options {
   int direct_leaf = -1;              // -1: default_direct_leaf
   int builds = 3;                    // builds timed; the median is reported
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 std::string json_array(const std::vector<double>& v) {
   std::string s = "[";

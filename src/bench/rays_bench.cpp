@@ -23,11 +23,6 @@ double clock_seconds(bool thread_cpu) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 // trace(k) runs tracer k once. Returns the median time of each tracer over `repeats` interleaved runs.
 template <class F>
 std::vector<double> median_seconds(F&& trace, std::size_t tracers, int repeats) {
@@ -75,6 +70,12 @@ SetResult summarize(const RaySet& set, const std::vector<Hit>& hits, double seco
 }
 
 }  // namespace
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
 
 bool bench_uses_thread_cpu_time() { return omp_get_max_threads() == 1; }
 
