@@ -2,6 +2,7 @@
 // rays and 4×4 packets), shadow (any-hit) and incoherent rays, optionally against Embree 3 in the
 // same run (issue 3). The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
 #include <omp.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -100,6 +101,11 @@ int run(const Options& o) {
       throw InputError("--bvh-width: " + std::string(isa_name(config.isa)) + " traverses nodes of " +
                        allowed + " children (or 0 for the default)");
   }
+  const bool tty = isatty(2);
+  const Progress progress = [tty](const std::string& what) {
+    std::fprintf(stderr, tty ? "\r\033[Kbench rays: %s" : "bench rays: %s\n", what.c_str());
+  };
+  progress("loading " + o.model);
   const ObjModel model = load_obj(o.model);
   const TriangleMesh& mesh = model.mesh;
 
@@ -131,12 +137,14 @@ int run(const Options& o) {
   const char* embree_isa = config.isa == Isa::avx512 ? "avx512" : (config.isa == Isa::avx2 ? "avx2" : "sse2");
   std::vector<double> build_runs, embree_build_runs;
   for (int b = 0; b < o.builds; ++b) {
+    progress("building the BVH (" + std::to_string(b + 1) + " of " + std::to_string(o.builds) + ")");
     bvh.reset();
     const auto t0 = std::chrono::steady_clock::now();
     bvh = std::make_unique<Bvh>(mesh, config, bvh_options);
     build_runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   for (int b = 0; o.vs_embree && b < o.builds; ++b) {
+    progress("building Embree's BVH (" + std::to_string(b + 1) + " of " + std::to_string(o.builds) + ")");
     embree.reset();
     double s = 0;
     embree = make_embree_tracer(mesh, threads, embree_isa, s);
@@ -148,10 +156,12 @@ int run(const Options& o) {
   const double bytes_per_tri = double(bvh->bytes()) / tris;
 
   const auto ours = make_accelerator_tracer(*bvh);
+  progress("making the rays");
   const BenchRays rays = make_bench_rays(mesh, width, height, *ours);
   std::vector<const RayTracer*> tracers{ours.get()};
   if (embree) tracers.push_back(embree.get());
-  const std::vector<TracerRun> runs = run_bench_rays(tracers, rays, o.repeats);
+  const std::vector<TracerRun> runs = run_bench_rays(tracers, rays, o.repeats, progress);
+  if (tty) std::fprintf(stderr, "\r\033[K");
   const TracerRun& run = runs[0];
   const TracerRun rival_run = embree ? runs[1] : TracerRun{};
   const Mismatches mismatches = embree ? count_mismatches(run, rival_run) : Mismatches{};

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/progress.h"
 #include "kernels/intersector.h"
 #include "kernels/isa.h"
 
@@ -62,9 +63,6 @@ struct ScalingResult {
 
 // Image side for `rays` (a perfect square) divided by `divisor`, rounded to nearest, at least 1.
 uint32_t scaled_side(uint32_t rays, uint32_t divisor);
-
-// Progress lines go here (stderr in the command); may be empty.
-using Progress = std::function<void(const std::string&)>;
 
 // Timed runs of each vectorized Table 1 column at least (unless min_seconds is 0, i.e. testing): one
 // run of mod2 takes ~0.5 s, over the 0.2 s minimum, so it used to be a single sample — on this shared

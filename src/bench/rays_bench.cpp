@@ -92,7 +92,10 @@ BenchRays make_bench_rays(const TriangleMesh& mesh, int width, int height, const
 }
 
 std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& tracers,
-                                      const BenchRays& b, int repeats) {
+                                      const BenchRays& b, int repeats, const Progress& progress) {
+  auto stage = [&](const char* set) {
+    if (progress) progress(std::string("tracing ") + set);
+  };
   const std::size_t n = tracers.size();
   std::vector<TracerRun> runs(n);
   for (TracerRun& run : runs) {
@@ -101,12 +104,15 @@ std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& trace
     run.incoherent_hits.resize(b.incoherent.rays.size());
     run.shadow_occluded.resize(b.shadow.rays.size());
   }
+  stage("primary rays");
   auto s = median_seconds([&](std::size_t k) { trace_closest(*tracers[k], b.primary, runs[k].primary_hits); },
                           n, repeats);
   for (std::size_t k = 0; k < n; ++k) runs[k].primary = summarize(b.primary, runs[k].primary_hits, s[k]);
+  stage("primary packets");
   s = median_seconds([&](std::size_t k) { trace_tiles(*tracers[k], b, runs[k].packet_hits); }, n, repeats);
   for (std::size_t k = 0; k < n; ++k)
     runs[k].primary_packet = summarize(b.tiles, runs[k].packet_hits, s[k]);
+  stage("shadow rays");
   s = median_seconds(
       [&](std::size_t k) { trace_occluded(*tracers[k], b.shadow, runs[k].shadow_occluded); }, n, repeats);
   for (std::size_t k = 0; k < n; ++k) {
@@ -114,6 +120,7 @@ std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& trace
     run.shadow = SetResult{b.shadow.rays.size(), 0, occluded_checksum(b.shadow, run.shadow_occluded), s[k]};
     for (uint8_t o : run.shadow_occluded) run.shadow.hits += o;
   }
+  stage("incoherent rays");
   s = median_seconds(
       [&](std::size_t k) { trace_closest(*tracers[k], b.incoherent, runs[k].incoherent_hits); }, n, repeats);
   for (std::size_t k = 0; k < n; ++k)

@@ -65,6 +65,21 @@ TEST(BenchRays, BuildsReportsEveryBuildAndTheirMedian) {
   EXPECT_EQ(test::run_cli("bench rays " + obj + " --size 4x4 --builds 0").status, 2);
 }
 
+// Off a terminal, every stage is one line on stderr; stdout keeps only the JSON object.
+TEST(BenchRays, ProgressGoesToStderrOneLineAStage) {
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays_progress"));
+  const auto r = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --builds 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* line : {"bench rays: loading ", "bench rays: building the BVH (1 of 2)\n",
+                           "bench rays: building the BVH (2 of 2)\n", "bench rays: making the rays\n",
+                           "bench rays: tracing primary rays\n", "bench rays: tracing primary packets\n",
+                           "bench rays: tracing shadow rays\n", "bench rays: tracing incoherent rays\n"})
+    EXPECT_NE(r.err.find(line), std::string::npos) << line << " in " << r.err;
+  ASSERT_FALSE(r.out.empty());
+  EXPECT_EQ(r.out.front(), '{') << r.out;
+  EXPECT_EQ(r.out.find("bench rays:"), std::string::npos) << r.out;
+}
+
 TEST(BenchRays, EveryIsaGivesTheSameChecksums) {
   const std::string obj = write_octahedron(test::temp_dir("bench_rays_isa"));
   const auto ref = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --isa scalar");
