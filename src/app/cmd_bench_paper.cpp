@@ -2,7 +2,6 @@
 // on one thread, 17 sizes) and the section 5.2 thread-scaling run — on the generated scene of
 // src/bench/paper_scene.h, printing a text table or one JSON object. Measurement: src/bench/paper_bench.cpp.
 #include <omp.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "bench/paper_bench.h"
+#include "bench/progress.h"
 #include "bench/paper_scene.h"
 #include "io/input_error.h"
 #include "io/json_string.h"
@@ -192,10 +192,8 @@ int run(const Options& o) {
                 (unsigned long long)kPaperSceneSeed);
     std::fflush(stdout);
   }
-  const bool tty = isatty(2);
-  const Progress progress = [tty](const std::string& what) {
-    std::fprintf(stderr, tty ? "\r\033[Kbench paper: %s" : "bench paper: %s\n", what.c_str());
-  };
+  const StageLine stages("bench paper");
+  const Progress progress = stages.progress();
 
   std::vector<Table1Result> table;
   uint64_t mismatches = 0;
@@ -214,7 +212,7 @@ int run(const Options& o) {
           mismatches += r.mismatches;
         }
   }
-  if (tty) std::fprintf(stderr, "\r\033[K");
+  stages.clear();
 
   if (o.json) {
     print_json(o, isa, threads, table_divisor, scaling_divisor, table, scaling, mismatches);

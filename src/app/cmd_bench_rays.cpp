@@ -2,7 +2,6 @@
 // rays and 4×4 packets), shadow (any-hit) and incoherent rays, optionally against Embree 3 in the
 // same run (issue 3). The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
 #include <omp.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -14,6 +13,7 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/trace_options.h"
+#include "bench/progress.h"
 #include "bench/rays_bench.h"
 #include "io/input_error.h"
 #include "io/json_string.h"
@@ -101,10 +101,8 @@ int run(const Options& o) {
       throw InputError("--bvh-width: " + std::string(isa_name(config.isa)) + " traverses nodes of " +
                        allowed + " children (or 0 for the default)");
   }
-  const bool tty = isatty(2);
-  const Progress progress = [tty](const std::string& what) {
-    std::fprintf(stderr, tty ? "\r\033[Kbench rays: %s" : "bench rays: %s\n", what.c_str());
-  };
+  const StageLine stages("bench rays");
+  const Progress progress = stages.progress();
   progress("loading " + o.model);
   const ObjModel model = load_obj(o.model);
   const TriangleMesh& mesh = model.mesh;
@@ -161,7 +159,7 @@ int run(const Options& o) {
   std::vector<const RayTracer*> tracers{ours.get()};
   if (embree) tracers.push_back(embree.get());
   const std::vector<TracerRun> runs = run_bench_rays(tracers, rays, o.repeats, progress);
-  if (tty) std::fprintf(stderr, "\r\033[K");
+  stages.clear();
   const TracerRun& run = runs[0];
   const TracerRun rival_run = embree ? runs[1] : TracerRun{};
   const Mismatches mismatches = embree ? count_mismatches(run, rival_run) : Mismatches{};
