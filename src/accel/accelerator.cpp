@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "accel/brute_force.h"
-#include "accel/bvh.h"
+#include "accel/bvh_accelerator.h"
 
 namespace rayvec {
 
@@ -23,7 +23,7 @@ std::unique_ptr<Accelerator> make_accelerator(AccelKind kind, const TriangleMesh
                                               const TraceConfig& config) {
   switch (kind) {
     case AccelKind::brute: return std::make_unique<BruteForce>(mesh, config);
-    case AccelKind::bvh: return std::make_unique<Bvh>(mesh, config);
+    case AccelKind::bvh: return std::make_unique<BvhAccelerator>(mesh, config);
   }
   throw std::invalid_argument("unknown accelerator");
 }

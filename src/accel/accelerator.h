@@ -11,8 +11,8 @@
 #include <string_view>
 
 #include "kernels/intersector.h"
-#include "kernels/isa.h"
-#include "kernels/kernel_table.h"
+#include "platform/isa.h"
+#include "kernels/triangle_kernels.h"
 #include "rays/ray.h"
 
 namespace rayvec {

@@ -1,7 +1,7 @@
 // BruteForce: every ray against every triangle, W triangles per SIMD step — the paper's workload.
 #pragma once
 #include "accel/accelerator.h"
-#include "kernels/kernel_table.h"
+#include "kernels/triangle_kernels.h"
 #include "kernels/triangle_soa.h"
 
 namespace rayvec {

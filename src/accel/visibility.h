@@ -10,7 +10,7 @@
 
 #include "accel/accelerator.h"
 #include "math/vec3.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 

@@ -11,7 +11,7 @@
 #include <random>
 
 #include "bench/ray_sets.h"
-#include "kernels/isa.h"
+#include "platform/isa.h"
 
 namespace rayvec {
 

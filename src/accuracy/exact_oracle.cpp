@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 

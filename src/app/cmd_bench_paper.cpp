@@ -15,7 +15,7 @@
 #include "bench/paper_scene.h"
 #include "io/input_error.h"
 #include "io/json_string.h"
-#include "kernels/kernel_table.h"
+#include "kernels/triangle_kernels.h"
 
 namespace rayvec {
 namespace {

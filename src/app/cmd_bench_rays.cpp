@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "accel/bvh.h"
+#include "accel/bvh_accelerator.h"
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/trace_options.h"
@@ -129,7 +129,7 @@ int run(const Options& o) {
   // compete with the other library's still-spinning workers (measured: rayvec's 1.3 ms builds of a
   // 4k mesh took 1.8 ms, some 10 ms). The previous structure is freed before the next build; the
   // last one is traced.
-  std::unique_ptr<Bvh> bvh;
+  std::unique_ptr<BvhAccelerator> bvh;
   std::unique_ptr<RayTracer> embree;
   // the rival gets the same ISA: Embree's widest at most rayvec's (it has no scalar code: SSE2)
   const char* embree_isa = config.isa == Isa::avx512 ? "avx512" : (config.isa == Isa::avx2 ? "avx2" : "sse2");
@@ -138,7 +138,7 @@ int run(const Options& o) {
     progress("building the BVH (" + std::to_string(b + 1) + " of " + std::to_string(o.builds) + ")");
     bvh.reset();
     const auto t0 = std::chrono::steady_clock::now();
-    bvh = std::make_unique<Bvh>(mesh, config, bvh_options);
+    bvh = std::make_unique<BvhAccelerator>(mesh, config, bvh_options);
     build_runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   for (int b = 0; o.vs_embree && b < o.builds; ++b) {

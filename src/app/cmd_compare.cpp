@@ -29,7 +29,7 @@ void register_compare_command(CommandLine& cli) {
           "Compares the colour channels as stored: PNG values sRGB-encoded in [0,1], EXR linear.\n"
           "Example golden test:\n"
           "  rayvec render scenes/whitted.json --width 96 --height 72 -o new.png\n"
-          "  rayvec compare tests/images/whitted.png new.png --max-rmse 0.01 --max-pixel 0.25")
+          "  rayvec compare tests/data/images/whitted.png new.png --max-rmse 0.01 --max-pixel 0.25")
       .run([] {
         if (o.max_rmse != -1 && !(o.max_rmse >= 0)) throw InputError("--max-rmse: must be >= 0");
         if (o.max_pixel != -1 && !(o.max_pixel >= 0)) throw InputError("--max-pixel: must be >= 0");

@@ -5,8 +5,8 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
-#include "kernels/isa.h"
-#include "kernels/kernel_table.h"
+#include "platform/isa.h"
+#include "kernels/triangle_kernels.h"
 
 namespace rayvec {
 

@@ -13,7 +13,7 @@
 
 #include "bench/ray_tracer.h"
 #include "io/input_error.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 namespace {

@@ -8,7 +8,7 @@
 // (docs/benchmarks.md, "Slow phases").
 #pragma once
 
-#include "kernels/isa.h"
+#include "platform/isa.h"
 
 namespace rayvec {
 

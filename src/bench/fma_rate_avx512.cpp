@@ -3,7 +3,7 @@
 
 #include "bench/cpu_clock.h"
 #include "bench/fma_rate.h"
-#include "kernels/simd/vfloat_avx512.h"
+#include "simd/vfloat_avx512.h"
 
 namespace rayvec::avx512 {
 

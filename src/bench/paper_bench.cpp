@@ -12,7 +12,7 @@
 #include "bench/cpu_clock.h"
 #include "bench/fma_rate.h"
 #include "bench/paper_scene.h"
-#include "kernels/paper_baselines.h"
+#include "bench/paper_baselines.h"
 
 namespace rayvec {
 

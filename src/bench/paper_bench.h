@@ -9,7 +9,7 @@
 
 #include "bench/progress.h"
 #include "kernels/intersector.h"
-#include "kernels/isa.h"
+#include "platform/isa.h"
 
 namespace rayvec {
 

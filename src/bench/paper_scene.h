@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "rays/ray.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 namespace {

@@ -1,21 +1,21 @@
-// Instantiates the wide-BVH traversal (bvh_traversal.inl) for avx512. Thin on purpose: the traversal
+// Instantiates the wide-BVH traversal (single_ray_traversal.inl) for avx512. Thin on purpose: the traversal
 // body is shared; only the box-lanes type and the compile flags (cmake/IsaFlags.cmake) differ.
 #include <cstdint>
 
-#include "bvh/bvh_kernels.h"
-#include "kernels/kernel_table.h"
-#include "kernels/simd/vfloat_avx512.h"
-#include "kernels/simd/box_lanes_avx512.h"
-#include "kernels/simd/packet_lanes_avx512.h"
+#include "bvh/bvh_traversal.h"
+#include "kernels/triangle_kernels.h"
+#include "simd/vfloat_avx512.h"
+#include "bvh/simd/box_lanes_avx512.h"
+#include "bvh/simd/packet_lanes_avx512.h"
 
 namespace rayvec::avx512 {
 
 constexpr Isa kThisIsa = Isa::avx512;
 
-#include "bvh/bvh_traversal.inl"
+#include "bvh/single_ray_traversal.inl"
 #include "kernels/moller_trumbore.inl"
-#include "kernels/mt_packet.inl"
-#include "bvh/bvh_packet.inl"
+#include "bvh/packet_leaf.inl"
+#include "bvh/packet_traversal.inl"
 
 namespace {
 // The closest-hit traversal's leaves by this unit's float `mt` kernel, called directly (inlined:
@@ -32,19 +32,19 @@ struct DirectMtLeaf {
 };
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhKernels k8{Isa::avx512, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
+constinit const BvhTraversal k8{Isa::avx512, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
                               &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16};
-constinit const BvhKernels k16{Isa::avx512, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>,
+constinit const BvhTraversal k16{Isa::avx512, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>,
                                &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16};
-constinit const BvhKernels k8_direct{Isa::avx512, 8, &bvh_closest<BoxLanes8, DirectMtLeaf>,
+constinit const BvhTraversal k8_direct{Isa::avx512, 8, &bvh_closest<BoxLanes8, DirectMtLeaf>,
                                      &bvh_occluded<BoxLanes8>,
                                      &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16, true};
-constinit const BvhKernels k16_direct{Isa::avx512, 16, &bvh_closest<BoxLanes16, DirectMtLeaf>,
+constinit const BvhTraversal k16_direct{Isa::avx512, 16, &bvh_closest<BoxLanes16, DirectMtLeaf>,
                                       &bvh_occluded<BoxLanes16>,
                                       &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16, true};
 }  // namespace
 
-const BvhKernels* bvh_kernels(int width, bool direct_leaf) {
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf) {
   switch (width) {
     case 8: return direct_leaf ? &k8_direct : &k8;
     case 16: return direct_leaf ? &k16_direct : &k16;

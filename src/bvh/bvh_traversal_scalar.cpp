@@ -1,23 +1,23 @@
-// Instantiates the wide-BVH traversal (bvh_traversal.inl) for scalar. Thin on purpose: the traversal
+// Instantiates the wide-BVH traversal (single_ray_traversal.inl) for scalar. Thin on purpose: the traversal
 // body is shared; only the box-lanes type and the compile flags (cmake/IsaFlags.cmake) differ.
 #include <cstdint>
 
-#include "bvh/bvh_kernels.h"
-#include "kernels/simd/box_lanes_scalar.h"
+#include "bvh/bvh_traversal.h"
+#include "bvh/simd/box_lanes_scalar.h"
 
 namespace rayvec::scalar {
 
-#include "bvh/bvh_traversal.inl"
+#include "bvh/single_ray_traversal.inl"
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhKernels k4{Isa::scalar, 4, &bvh_closest<BoxLanes<4>>, &bvh_occluded<BoxLanes<4>>,
+constinit const BvhTraversal k4{Isa::scalar, 4, &bvh_closest<BoxLanes<4>>, &bvh_occluded<BoxLanes<4>>,
                               nullptr, 0};
-constinit const BvhKernels k8{Isa::scalar, 8, &bvh_closest<BoxLanes<8>>, &bvh_occluded<BoxLanes<8>>,
+constinit const BvhTraversal k8{Isa::scalar, 8, &bvh_closest<BoxLanes<8>>, &bvh_occluded<BoxLanes<8>>,
                               nullptr, 0};
 }  // namespace
 
-const BvhKernels* bvh_kernels(int width, bool /*direct_leaf: AVX-512 only*/) {
+const BvhTraversal* bvh_traversal(int width, bool /*direct_leaf: AVX-512 only*/) {
   switch (width) {
     case 4: return &k4;
     case 8: return &k8;

@@ -5,7 +5,7 @@
 #pragma once
 #include <cstdint>
 
-#include "bvh/binned_sah_builder.h"
+#include "bvh/binary_bvh.h"
 
 namespace rayvec {
 

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <memory>
 
-#include "bvh/binned_sah_builder.h"
-#include "kernels/large_buffer.h"
+#include "bvh/binary_bvh.h"
+#include "platform/large_buffer.h"
 
 namespace rayvec {
 
@@ -19,7 +19,7 @@ inline constexpr uint32_t kLeafFlag = 0x80000000u;
 inline constexpr uint32_t kEmptyRef = 0xffffffffu;
 inline constexpr uint32_t kMaxLeafTriangles = 32;
 inline constexpr uint32_t kMaxLeafBegin = 1u << 26;
-// Relative widening of every ray–box interval (see bvh_traversal.inl): 2^-18.
+// Relative widening of every ray–box interval (see single_ray_traversal.inl): 2^-18.
 inline constexpr float kDefaultBoxEpsilon = 1.0f / 262144.0f;
 
 // One node: bounds[0..2] = lo x, y, z and bounds[3..5] = hi x, y, z of each child, child k in lane k.
@@ -39,7 +39,7 @@ struct BvhArrays {
   uint32_t stack_size;   // entries a traversal stack needs: depth · (width − 1) + 1, never exceeded
   float box_epsilon;     // relative widening of ray–box intervals (kDefaultBoxEpsilon)
   // the union of the root's child boxes, the bounds of the whole tree (lo = +inf, hi = −inf when
-  // there are none): the packets' first test (bvh_packet.inl)
+  // there are none): the packets' first test (packet_traversal.inl)
   float root_lo[3], root_hi[3];
 };
 

@@ -11,7 +11,7 @@
 #pragma once
 #include <cstdint>
 
-#include "kernels/kernel_table.h"
+#include "kernels/triangle_kernels.h"
 
 namespace rayvec {
 

@@ -228,7 +228,7 @@ struct MtNumerators {
 
 // Where the float `mt` arithmetic gets its triangle values: W consecutive triangles, one per lane
 // (brute force and the single-ray leaf kernel), or one triangle broadcast to every lane (the
-// ray-packet leaf kernel, mt_packet.inl). `at(T.v0x)` gives the lanes of that array. Both go
+// ray-packet leaf kernel, packet_leaf.inl). `at(T.v0x)` gives the lanes of that array. Both go
 // through mt_numerators_core, so a ray gets bit-identical numerators whichever way the lanes are
 // laid out; the values are fetched where they are used, as before the split.
 template <class V>

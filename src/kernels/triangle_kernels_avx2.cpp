@@ -3,8 +3,8 @@
 // vector types and the compile flags (cmake/IsaFlags.cmake) differ.
 #include <cstdint>
 
-#include "kernels/kernel_table.h"
-#include "kernels/simd/vfloat_avx2.h"
+#include "kernels/triangle_kernels.h"
+#include "simd/vfloat_avx2.h"
 
 namespace rayvec::avx2 {
 

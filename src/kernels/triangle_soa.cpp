@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernels/large_buffer.h"
-#include "scene/mesh.h"
+#include "platform/large_buffer.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 namespace {

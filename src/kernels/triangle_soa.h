@@ -22,7 +22,7 @@
 #include <span>
 #include <vector>
 
-#include "kernels/large_buffer.h"
+#include "platform/large_buffer.h"
 #include "math/vec3.h"
 
 namespace rayvec {

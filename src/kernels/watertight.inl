@@ -21,10 +21,6 @@
 // sign test: a nonzero float edge function already has the exact sign (float rounding is monotone),
 // so only zeros can change the answer.
 
-#ifndef RAYVEC_COLD
-#define RAYVEC_COLD __attribute__((noinline, cold))
-#endif
-
 // a·b rounded to V's precision and kept apart from any add that follows: GCC contracts a·b − c·d
 // into an FMA in C++ (-ffp-contract=fast is its default there), which would break the exact
 // negation of shared edges and make AVX results differ from scalar ones. The empty asm is free.

@@ -1,5 +1,5 @@
 // Vec3: the small 3-vector used across rayvec (positions, directions, colours).
-// Plain aggregate, no SIMD: the kernels use the SoA types of src/kernels/simd instead.
+// Plain aggregate, no SIMD: the kernels use the lane types of src/simd/ instead.
 #pragma once
 #include <cmath>
 

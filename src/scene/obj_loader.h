@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "scene/material.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 

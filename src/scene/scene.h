@@ -11,7 +11,7 @@
 
 #include "image/image.h"
 #include "scene/material.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 #include "scene/transform.h"
 
 namespace rayvec {

@@ -1,0 +1,70 @@
+#include "accel/bvh_accelerator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bvh/leaf_alignment.h"
+#include "geometry/triangle_mesh.h"
+
+namespace rayvec {
+namespace {
+
+// Brute force never hits a ray with a NaN or infinite origin or direction, or a NaN interval (every
+// kernel comparison is ordered); rejecting them here keeps NaN out of the box test.
+bool traceable(const Ray& r) {
+  return std::isfinite(r.org.x) && std::isfinite(r.org.y) && std::isfinite(r.org.z) &&
+         std::isfinite(r.dir.x) && std::isfinite(r.dir.y) && std::isfinite(r.dir.z) &&
+         !std::isnan(r.tmin) && !std::isnan(r.tmax);
+}
+
+// Whether the closest-hit traversal calls the leaf kernel directly: only the float mt kernel has
+// a direct form.
+bool direct_leaf(const TraceConfig& config, const BvhOptions& options) {
+  if (config.intersector != Intersector::mt) return false;
+  if (options.direct_leaf < 0) return default_direct_leaf(config.isa, cpu_features().vendor);
+  return options.direct_leaf != 0;
+}
+
+}  // namespace
+
+BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& options)
+    : config_(config),
+      kernels_(&triangle_kernels(config.isa, config.intersector)),
+      traversal_(&bvh_traversal(config.isa,
+                              options.width ? options.width : default_bvh_width(config.isa, mesh.size()),
+                              direct_leaf(config, options))) {
+  SahConfig sah = options.sah;
+  if (options.leaves_from_kernel && kernels_->width >= 8) {
+    sah.leaf_block = uint32_t(kernels_->width);
+    sah.max_leaf = std::min(2 * sah.leaf_block, kMaxLeafTriangles);
+  }
+  BinaryBvh binary = build_binned_sah(mesh, sah);
+  align_leaves(binary, uint32_t(kernels_->width));
+  tree_ = WideBvh(binary, traversal_->width);
+  tree_.set_box_epsilon(options.box_epsilon);
+  tris_ = TriangleSoA(mesh, binary.order);
+}
+
+Hit BvhAccelerator::closest(const Ray& ray) const {
+  Hit hit;
+  if (traceable(ray)) traversal_->closest(tree_.arrays(), tris_.arrays(), *kernels_, ray, hit);
+  return hit;
+}
+
+void BvhAccelerator::closest_stream(const Ray* rays, Hit* hits, std::size_t n) const {
+  const int w = traversal_->closest_packet ? traversal_->packet_width : 0;
+  std::size_t i = 0;
+  for (; w > 0 && i + 1 < n; i += std::size_t(w)) {
+    // the packet resets the hits and drops the untraceable lanes itself, in SIMD
+    const std::size_t count = std::min(n - i, std::size_t(w));
+    traversal_->closest_packet(tree_.arrays(), tris_.arrays(), *kernels_, rays + i, hits + i,
+                               (1u << count) - 1u);
+  }
+  for (; i < n; ++i) hits[i] = closest(rays[i]);
+}
+
+bool BvhAccelerator::occluded(const Ray& ray, const HitFilter* filter) const {
+  return traceable(ray) && traversal_->occluded(tree_.arrays(), tris_.arrays(), *kernels_, ray, filter);
+}
+
+}  // namespace rayvec

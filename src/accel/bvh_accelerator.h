@@ -1,0 +1,54 @@
+// BvhAccelerator: the accelerator for real scenes — a binned-SAH tree (bvh/binary_bvh.h) collapsed into
+// a wide BVH (bvh/wide_bvh.h) whose leaves are slot ranges of one TriangleSoA in leaf order, so the
+// leaf intersector is the triangle kernel table of the configured ISA and intersector. Returns
+// exactly what BruteForce returns (same ids and t; equal t: lowest id).
+#pragma once
+#include "accel/accelerator.h"
+#include "bvh/binary_bvh.h"
+#include "bvh/bvh_traversal.h"
+#include "bvh/wide_bvh.h"
+#include "kernels/triangle_kernels.h"
+#include "kernels/triangle_soa.h"
+
+namespace rayvec {
+
+struct BvhOptions {
+  SahConfig sah;
+  // Size leaves to the triangle kernel (measured, docs/benchmarks.md): SAH leaf cost per
+  // kernel-width block of triangles and up to two blocks per leaf (AVX-512: 16 and 32, AVX2: 8 and
+  // 16; scalar keeps sah's 4 and 8). false: use sah.max_leaf and sah.leaf_block as given.
+  bool leaves_from_kernel = true;
+  int width = 0;  // children per node: 0 = default_bvh_width(isa, triangles)
+  float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
+  // The closest-hit traversal calls the float `mt` leaf kernel directly (1) or through the kernel
+  // table (0); −1 = default_direct_leaf(isa, this CPU's vendor). Other intersectors always use
+  // the table. Same results either way.
+  int direct_leaf = -1;
+};
+
+class BvhAccelerator final : public Accelerator {
+ public:
+  // Builds with omp_get_max_threads() threads. Throws std::length_error for 2^26 or more triangles.
+  BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& options = {});
+
+  Hit closest(const Ray& ray) const override;
+  bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
+  // Consecutive groups of packet_width rays (16 on AVX-512, 8 on AVX2) are traversed as packets —
+  // best for coherent rays such as a 4×4 camera tile; results equal closest() ray by ray.
+  void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;
+  std::size_t bytes() const override { return tris_.bytes() + tree_.bytes(); }
+  const TraceConfig& config() const override { return config_; }
+
+  const WideBvh& tree() const { return tree_; }
+  const TriangleSoA& triangles() const { return tris_; }
+  const BvhTraversal& traversal() const { return *traversal_; }  // the traversal table in use
+
+ private:
+  TraceConfig config_;
+  WideBvh tree_;
+  TriangleSoA tris_;
+  const TriangleKernels* kernels_;
+  const BvhTraversal* traversal_;
+};
+
+}  // namespace rayvec

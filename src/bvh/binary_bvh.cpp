@@ -1,0 +1,383 @@
+#include "bvh/binary_bvh.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <new>
+
+#include "platform/large_buffer.h"
+#include "geometry/triangle_mesh.h"
+
+namespace rayvec {
+namespace {
+
+constexpr int kMaxBins = 64;
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr uint32_t kParallelBinning = 2048;        // ranges this large may bin in parallel chunks
+constexpr uint32_t kParallelPartition = 1u << 16;  // ... and partition in parallel chunks
+constexpr int kBinningChunks = 4;
+// fewer triangles: build on the calling thread (a 1,000-triangle build takes ~0.3 ms, a parallel
+// region a few µs when the team's threads are awake)
+constexpr std::size_t kParallelBuild = 1024;
+
+// One triangle's box and id, moved (not indexed) by the partitions so every pass reads memory in
+// order — random access through an index array was the builder's bottleneck.
+struct alignas(32) Prim {
+  float lo[3];
+  uint32_t id;
+  float hi[3];
+  float pad;
+  float centroid(int a) const { return (lo[a] + hi[a]) * 0.5f; }
+};
+
+// min/max that keep the first operand when the second is NaN (a NaN vertex never widens a box);
+// branch-free (minss/maxss).
+float min_keep(float a, float b) { return b < a ? b : a; }
+float max_keep(float a, float b) { return b > a ? b : a; }
+
+struct BinBox {
+  float lo[3] = {kInf, kInf, kInf};
+  float hi[3] = {-kInf, -kInf, -kInf};
+  uint32_t count = 0;
+  void grow(const Prim& p) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = min_keep(lo[a], p.lo[a]);
+      hi[a] = max_keep(hi[a], p.hi[a]);
+    }
+    ++count;
+  }
+  void grow(const BinBox& b) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = min_keep(lo[a], b.lo[a]);
+      hi[a] = max_keep(hi[a], b.hi[a]);
+    }
+    count += b.count;
+  }
+  BBox box() const { return BBox{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+  float half_area() const { return box().half_area(); }
+};
+
+// Bins of all three axes over one range of primitives.
+struct Bins {
+  BinBox bin[3][kMaxBins];
+};
+
+struct Split {
+  int axis = -1;
+  int bin = 0;  // primitives in bins [0, bin] go left
+  float cost = kInf;
+  BBox left, right;
+};
+
+// Bin of a centroid coordinate; NaN and out-of-range values are clamped to the end bins.
+int bin_of(float c, float lo, float scale, int bins) {
+  const float f = (c - lo) * scale;
+  if (!(f > 0.0f)) return 0;
+  return f >= float(bins - 1) ? bins - 1 : int(f);
+}
+
+class Builder {
+ public:
+  Builder(const TriangleMesh& mesh, const SahConfig& config, BinaryBvh& out)
+      : config_(config), bins_(std::clamp(config.bins, 2, kMaxBins)), out_(out) {
+    const std::size_t n = mesh.size();
+    // uninitialized (no serial zeroing of 32 bytes a triangle): the parallel loop writes each one
+    prims_buffer_ = allocate_large_buffer(sizeof(Prim) * n);
+    prims_ = static_cast<Prim*>(prims_buffer_.get());
+    count_ = n;
+    out_.order.resize(n);
+    const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) if (n >= kParallelBuild)
+    for (std::int64_t i = 0; i < count; ++i) {
+      BinBox b;
+      for (int c = 0; c < 3; ++c) {
+        const Vec3f v = mesh.vertex(std::size_t(i), c);
+        for (int a = 0; a < 3; ++a) {
+          b.lo[a] = min_keep(b.lo[a], v[a]);
+          b.hi[a] = max_keep(b.hi[a], v[a]);
+        }
+      }
+      prims_[i] = Prim{{b.lo[0], b.lo[1], b.lo[2]}, uint32_t(i), {b.hi[0], b.hi[1], b.hi[2]}, 0.0f};
+    }
+    // at most 2n - 1 nodes (children are allocated in pairs), uninitialized: the tree uses a few
+    // percent of them, so only the pages written are ever touched (zeroing 2n nodes serially cost
+    // more than the parallel parts of the build it preceded); run() copies out the used prefix
+    if (n > 0) nodes_.reset(static_cast<BinaryNode*>(::operator new(sizeof(BinaryNode) * (2 * n - 1))));
+    // uninitialized (no serial zeroing): the partitions of the large ranges go through it
+    if (n >= kParallelPartition) {
+      scratch_buffer_ = allocate_large_buffer(sizeof(Prim) * n);
+      scratch_ = static_cast<Prim*>(scratch_buffer_.get());
+    }
+  }
+
+  void run() {
+    if (count_ == 0) return;
+    const auto n = static_cast<uint32_t>(count_);
+#pragma omp parallel if (n >= kParallelBuild)
+#pragma omp single nowait
+    build(0, 0, n, range_box(0, n, false, 0), 0);
+    out_.nodes.assign(nodes_.get(), nodes_.get() + next_node_.load());
+    nodes_.reset();
+  }
+
+ private:
+  struct Range {
+    float lo[3], scale[3];
+  };
+
+  // Whether a range of n primitives at this depth is worked on in chunks as tasks: only while the
+  // tree has fewer ranges at this depth than threads (2^depth < threads). Below that the subtrees
+  // alone keep every thread busy, and chunking costs more than it gains (the two-pass partition
+  // moves the range twice; the chunked binning merges 4 sets of bins). `threshold`: kParallelBinning
+  // for the binning and the bounds, kParallelPartition for the partition.
+  bool chunked(uint32_t n, int depth, uint32_t threshold = kParallelBinning) const {
+    return n >= threshold && depth < 30 && (1 << depth) < threads_;
+  }
+
+  void bin_range(uint32_t begin, uint32_t end, const Range& r, Bins& out) const {
+    for (uint32_t i = begin; i < end; ++i) {
+      const Prim& p = prims_[i];
+      for (int a = 0; a < 3; ++a) out.bin[a][bin_of(p.centroid(a), r.lo[a], r.scale[a], bins_)].grow(p);
+    }
+  }
+
+  Split find_split(uint32_t begin, uint32_t end, const BBox& cbox, int depth) const {
+    const Vec3f ext = cbox.extent();
+    Range r;
+    for (int a = 0; a < 3; ++a) {
+      r.lo[a] = cbox.lo[a];
+      r.scale[a] = ext[a] > 0.0f ? float(bins_) / ext[a] : 0.0f;
+    }
+    Bins bins;
+    if (chunked(end - begin, depth)) {  // the top of the tree: bin chunks as tasks, merge
+      Bins part[kBinningChunks];
+      const uint32_t step = (end - begin + kBinningChunks - 1) / kBinningChunks;
+      for (int c = 0; c < kBinningChunks; ++c) {
+        const uint32_t b = begin + uint32_t(c) * step, e = std::min(end, b + step);
+#pragma omp task shared(part, r) firstprivate(b, e, c)
+        bin_range(b, e, r, part[c]);
+      }
+#pragma omp taskwait
+      for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < bins_; ++k)
+          for (int c = 0; c < kBinningChunks; ++c) bins.bin[a][k].grow(part[c].bin[a][k]);
+    } else {
+      bin_range(begin, end, r, bins);
+    }
+    Split best;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(ext[axis] > 0.0f)) continue;
+      const BinBox* bin = bins.bin[axis];
+      // sweep from the right, then from the left
+      float right_area[kMaxBins];
+      uint32_t right_count[kMaxBins];
+      BinBox acc;
+      for (int k = bins_ - 1; k > 0; --k) {
+        acc.grow(bin[k]);
+        right_area[k] = acc.half_area();
+        right_count[k] = acc.count;
+      }
+      BinBox left;
+      for (int k = 0; k < bins_ - 1; ++k) {
+        left.grow(bin[k]);
+        const uint32_t nr = right_count[k + 1];
+        if (left.count == 0 || nr == 0) continue;
+        const float cost = left.half_area() * leaf_cost(left.count) + right_area[k + 1] * leaf_cost(nr);
+        if (cost < best.cost) {
+          best.cost = cost;
+          best.axis = axis;
+          best.bin = k;
+        }
+      }
+      if (best.axis == axis) {  // boxes of the chosen split
+        BinBox l, rr;
+        for (int k = 0; k < bins_; ++k) (k <= best.bin ? l : rr).grow(bin[k]);
+        best.left = l.box();
+        best.right = rr.box();
+      }
+    }
+    return best;
+  }
+
+  float leaf_cost(uint32_t n) const {
+    return float((n + config_.leaf_block - 1) / config_.leaf_block);
+  }
+
+  void make_leaf(uint32_t node, uint32_t begin, uint32_t end, const BBox& box) {
+    for (uint32_t i = begin; i < end; ++i) out_.order[i] = prims_[i].id;
+    std::sort(out_.order.begin() + begin, out_.order.begin() + end);  // ids increase in a leaf
+    new (nodes_.get() + node) BinaryNode{box, begin, end - begin};
+  }
+
+  void grow_range(uint32_t begin, uint32_t end, bool centroids, BinBox& b) const {
+    for (uint32_t i = begin; i < end; ++i) {
+      const Prim& p = prims_[i];
+      for (int a = 0; a < 3; ++a) {
+        const float lo = centroids ? p.centroid(a) : p.lo[a], hi = centroids ? p.centroid(a) : p.hi[a];
+        b.lo[a] = min_keep(b.lo[a], lo);
+        b.hi[a] = max_keep(b.hi[a], hi);
+      }
+    }
+  }
+
+  // Bounds of the boxes (or centroids) of a range; large ranges in chunks as tasks (min and max
+  // are exact, so the result does not depend on the chunking).
+  BBox range_box(uint32_t begin, uint32_t end, bool centroids, int depth) const {
+    BinBox b;
+    if (chunked(end - begin, depth)) {
+      BinBox part[kBinningChunks];
+      const uint32_t step = (end - begin + kBinningChunks - 1) / kBinningChunks;
+      for (int c = 0; c < kBinningChunks; ++c) {
+        const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+#pragma omp task shared(part) firstprivate(cb, ce, c, centroids)
+        grow_range(cb, ce, centroids, part[c]);
+      }
+#pragma omp taskwait
+      for (const BinBox& p : part) b.grow(p);
+    } else {
+      grow_range(begin, end, centroids, b);
+    }
+    return b.box();
+  }
+
+  // Moves the primitives of [begin, end) for which goes_left(p) holds before the others and
+  // returns the first of the others. Chunked ranges (see chunked()): a stable two-pass partition
+  // in chunks as tasks (count, then scatter through scratch_ and copy back) — the root's partition
+  // was the largest serial step of the build; other ranges keep the in-place std::partition, which
+  // moves less memory. The order inside each side does not matter: every later decision depends
+  // only on the set of primitives in a range.
+  template <class F>
+  uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left) {
+    Prim* data = prims_;
+    if (!chunked(end - begin, depth, kParallelPartition) || !scratch_)
+      return uint32_t(std::partition(data + begin, data + end, goes_left) - data);
+    constexpr int C = kBinningChunks;
+    const uint32_t step = (end - begin + C - 1) / C;
+    uint32_t lefts[C] = {};
+    const F* pred = &goes_left;
+    for (int c = 0; c < C; ++c) {
+      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+#pragma omp task shared(lefts) firstprivate(cb, ce, c, pred, data)
+      {
+        uint32_t k = 0;
+        for (uint32_t i = cb; i < ce; ++i) k += (*pred)(data[i]) ? 1u : 0u;
+        lefts[c] = k;
+      }
+    }
+#pragma omp taskwait
+    uint32_t left_at[C], right_at[C];
+    uint32_t total_left = 0;
+    for (int c = 0; c < C; ++c) total_left += lefts[c];
+    uint32_t l = begin, r = begin + total_left;
+    for (int c = 0; c < C; ++c) {
+      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+      left_at[c] = l;
+      right_at[c] = r;
+      l += lefts[c];
+      r += (ce > cb ? ce - cb : 0) - lefts[c];
+    }
+    Prim* scratch = scratch_;
+    for (int c = 0; c < C; ++c) {
+      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+      const uint32_t l0 = left_at[c], r0 = right_at[c];
+#pragma omp task firstprivate(cb, ce, l0, r0, pred, data, scratch)
+      {
+        uint32_t li = l0, ri = r0;
+        for (uint32_t i = cb; i < ce; ++i) scratch[(*pred)(data[i]) ? li++ : ri++] = data[i];
+      }
+    }
+#pragma omp taskwait
+    for (int c = 0; c < C; ++c) {
+      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
+#pragma omp task firstprivate(cb, ce, data, scratch)
+      std::copy(scratch + cb, scratch + ce, data + cb);
+    }
+#pragma omp taskwait
+    return begin + total_left;
+  }
+
+  void build(uint32_t node, uint32_t begin, uint32_t end, const BBox& box, int depth) {
+    const uint32_t n = end - begin;
+    if (n <= 1) return make_leaf(node, begin, end, box);
+    const BBox cbox = range_box(begin, end, true, depth);
+
+    uint32_t mid = begin;
+    BBox left_box, right_box;
+    const Split split = depth < config_.max_sah_depth ? find_split(begin, end, cbox, depth) : Split{};
+    if (split.axis >= 0) {
+      const float area = box.half_area();
+      const float split_cost = config_.traversal_cost + (area > 0.0f ? split.cost / area : 0.0f);
+      if (n <= config_.max_leaf && leaf_cost(n) <= split_cost) return make_leaf(node, begin, end, box);
+      const int axis = split.axis;
+      const float lo = cbox.lo[axis], scale = float(bins_) / cbox.extent()[axis];
+      const int bins = bins_, last_left = split.bin;
+      mid = partition_range(begin, end, depth, [axis, lo, scale, bins, last_left](const Prim& p) {
+        return bin_of(p.centroid(axis), lo, scale, bins) <= last_left;
+      });
+      left_box = split.left;
+      right_box = split.right;
+    } else if (n <= config_.max_leaf) {
+      return make_leaf(node, begin, end, box);
+    }
+    if (mid == begin || mid == end) {
+      // no usable SAH split (equal centroids, or too deep): object median on the widest axis, which
+      // halves the range so the depth stays logarithmic
+      const Vec3f e = cbox.extent();
+      const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+      mid = begin + n / 2;
+      std::nth_element(prims_ + begin, prims_ + mid, prims_ + end,
+                       [&](const Prim& a, const Prim& b) {
+                         const float ca = a.centroid(axis), cb = b.centroid(axis);
+                         return ca < cb || (ca == cb && a.id < b.id);
+                       });
+      left_box = range_box(begin, mid, false, depth);
+      right_box = range_box(mid, end, false, depth);
+    }
+    const uint32_t left = next_node_.fetch_add(2);
+    new (nodes_.get() + node) BinaryNode{box, left, 0};
+    if (n >= config_.task_threshold) {
+      // both halves as tasks: a taskwait waits for every child of the current task, so a right
+      // half built in place would, at its first binning taskwait, also wait for (and usually run)
+      // the whole left half — which serialised the build
+#pragma omp task firstprivate(left, begin, mid, left_box, depth)
+      build(left, begin, mid, left_box, depth + 1);
+#pragma omp task firstprivate(left, mid, end, right_box, depth)
+      build(left + 1, mid, end, right_box, depth + 1);
+#pragma omp taskwait
+    } else {
+      build(left, begin, mid, left_box, depth + 1);
+      build(left + 1, mid, end, right_box, depth + 1);
+    }
+  }
+
+  const SahConfig& config_;
+  const int threads_ = omp_get_max_threads();
+  const int bins_;
+  BinaryBvh& out_;
+  // primitive records and the partition buffer (ranges of kParallelPartition or more): LargeBuffers,
+  // uninitialized; the constructor's parallel loop writes every record
+  LargeBuffer prims_buffer_, scratch_buffer_;
+  Prim* prims_ = nullptr;
+  std::size_t count_ = 0;
+  Prim* scratch_ = nullptr;
+  struct OperatorDelete {
+    void operator()(BinaryNode* p) const { ::operator delete(p); }
+  };
+  std::unique_ptr<BinaryNode, OperatorDelete> nodes_;  // 2n − 1 slots, see the constructor
+  std::atomic<uint32_t> next_node_{1};
+};
+
+}  // namespace
+
+BinaryBvh build_binned_sah(const TriangleMesh& mesh, const SahConfig& config) {
+  BinaryBvh out;
+  Builder builder(mesh, config, out);
+  builder.run();
+  return out;
+}
+
+}  // namespace rayvec

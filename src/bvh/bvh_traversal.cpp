@@ -1,0 +1,51 @@
+// Chooses the BVH traversal table for an ISA and node width. Baseline code; ISA units are entered
+// only when the CPU supports them.
+#include <stdexcept>
+#include <string>
+
+#include "bvh/bvh_traversal.h"
+
+namespace rayvec {
+
+BvhWidths bvh_widths(Isa isa) {
+  switch (isa) {
+    case Isa::avx512: return {{8, 16, 0}, 2};
+    case Isa::avx2: return {{8, 16, 0}, 2};
+    case Isa::scalar: break;
+  }
+  return {{8, 4, 0}, 2};
+}
+
+int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor) {
+  if (isa == Isa::avx512 && vendor == "GenuineIntel") return 16;
+  return isa != Isa::scalar && triangles >= kWideNodeTriangles ? 16 : 8;
+}
+
+int default_bvh_width(Isa isa, std::size_t triangles) {
+  return default_bvh_width(isa, triangles, cpu_features().vendor);
+}
+
+bool default_direct_leaf(Isa isa, std::string_view vendor) {
+  return isa == Isa::avx512 && vendor == "GenuineIntel";
+}
+
+const BvhTraversal& bvh_traversal(Isa isa, int width) {
+  return bvh_traversal(isa, width, default_direct_leaf(isa, cpu_features().vendor));
+}
+
+const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf) {
+  if (!isa_supported(isa))
+    throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
+  const BvhTraversal* k = nullptr;
+  switch (isa) {
+    case Isa::avx512: k = avx512::bvh_traversal(width, direct_leaf); break;
+    case Isa::avx2: k = avx2::bvh_traversal(width, direct_leaf); break;
+    case Isa::scalar: k = scalar::bvh_traversal(width, direct_leaf); break;
+  }
+  if (!k)
+    throw std::invalid_argument("no " + std::to_string(width) + "-wide BVH traversal for ISA " +
+                                isa_name(isa));
+  return *k;
+}
+
+}  // namespace rayvec

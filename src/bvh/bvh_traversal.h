@@ -1,0 +1,68 @@
+// BvhTraversal: the traversal functions one (ISA, node width) pair provides, chosen once per BVH
+// (bvh_traversal.cpp) like the triangle kernel table, never per ray.
+#pragma once
+#include <cstddef>
+#include <string_view>
+
+#include "bvh/wide_bvh.h"
+#include "kernels/triangle_kernels.h"
+
+namespace rayvec {
+
+struct BvhTraversal {
+  Isa isa;
+  int width;  // children per node this table traverses
+
+  // Closest hit of `ray` (finite origin and direction) as TriangleKernels::closest defines it, over
+  // the whole tree; `hit` must be a miss or a previous result for the same ray.
+  void (*closest)(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                  const Ray& ray, Hit& hit);
+  // Any hit (finite origin and direction) accepted by `filter` (may be null); exits at the first.
+  bool (*occluded)(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                   const Ray& ray, const HitFilter* filter);
+  // Closest hits of the rays rays[k] for the lanes k set in `active` (k < packet_width; the other
+  // rays are not read), traversed as one packet: each hits[k] is overwritten with what closest()
+  // gives from a miss (a miss for a ray BvhAccelerator would reject: NaN or infinite origin or direction, NaN
+  // tmin or tmax). Null when the ISA has no packets.
+  void (*closest_packet)(const BvhArrays& bvh, const TriangleArrays& tris,
+                         const TriangleKernels& kernels, const Ray* rays, Hit* hits, unsigned active);
+  int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
+  bool direct_leaf = false;  // closest() calls the float `mt` leaf kernel directly (default_direct_leaf)
+};
+
+// The node widths an ISA has traversal code for.
+struct BvhWidths {
+  int widths[3];
+  int count;
+};
+BvhWidths bvh_widths(Isa isa);
+
+// The node width a BVH over `triangles` triangles gets by default on a CPU whose cpuid vendor is
+// `vendor`, as measured (docs/benchmarks.md, "Blocked rows, 16-wide nodes, huge pages" and "An
+// Intel Xeon"): 16 on AVX-512 and AVX2 from kWideNodeTriangles triangles up (deep trees: fewer
+// levels, so fewer dependent node fetches per ray), else 8 — except AVX-512 on Intel, 16 at every
+// size (Xeon model 207, 4k-triangle meshes: single rays +7–19 %, packets within ±3 %; on AMD Zen 5
+// small meshes lost up to 11 % of their shadow rays with 16-wide nodes). The two-argument form
+// uses this CPU's vendor.
+inline constexpr std::size_t kWideNodeTriangles = 32768;
+int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
+int default_bvh_width(Isa isa, std::size_t triangles);
+
+// Whether the closest-hit traversal calls the float `mt` leaf kernel directly (inlined) instead of
+// through the kernel table, on a CPU whose cpuid vendor is `vendor`: AVX-512 on Intel only, as
+// measured (docs/benchmarks.md, "The leaf kernel called directly"): on the Xeon of 2026-12-01
+// incoherent rays +5 % on the 1M sphere, on the AMD Zen 5 of 2026-11-22 −4 %. Other ISAs have no
+// direct form. Same results either way.
+bool default_direct_leaf(Isa isa, std::string_view vendor);
+
+// The table for (isa, width), with the direct leaf call where `direct_leaf` and the ISA has one;
+// the ISA must be supported and the width one of bvh_widths(isa). The two-argument form uses
+// default_direct_leaf for this CPU.
+const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf);
+const BvhTraversal& bvh_traversal(Isa isa, int width);
+
+namespace scalar { const BvhTraversal* bvh_traversal(int width, bool direct_leaf); }
+namespace avx2 { const BvhTraversal* bvh_traversal(int width, bool direct_leaf); }
+namespace avx512 { const BvhTraversal* bvh_traversal(int width, bool direct_leaf); }
+
+}  // namespace rayvec
