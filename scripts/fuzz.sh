@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses of tests/fuzz/ (clang-14, ASan + UBSan) into build-fuzz/ and runs
 # each one for SECONDS (default 10) seconds, one after another, starting from the seed corpus in
-# tests/fuzz/corpus/<target>/ (the corpus grown by earlier runs is kept in build-fuzz/corpus/).
+# tests/data/fuzz_corpus/<target>/ (the corpus grown by earlier runs is kept in build-fuzz/corpus/).
 # Exits non-zero at the first crash, leak, hang (-timeout) or sanitizer report, naming the
 # reproducer file; turn it into a regression test under tests/data/ (see docs/reliability.md).
 # Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: obj scene_json rays_csv visibility_csv
@@ -45,7 +45,7 @@ for t in "${targets[@]}"; do
   start=$SECONDS
   if ! "$build/fuzz_$t" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 \
        -print_final_stats=1 -artifact_prefix="$artifacts/" \
-       "$corpus" "$root/tests/fuzz/corpus/$t" >"$log" 2>&1; then
+       "$corpus" "$root/tests/data/fuzz_corpus/$t" >"$log" 2>&1; then
     grep -E "ERROR|SUMMARY|Test unit written" "$log" >&2 || tail -20 "$log" >&2
     echo "fuzz: $t FAILED (log: $log)" >&2
     exit 1

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "accuracy/exact_oracle.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "bench/ray_tracer.h"
-#include "kernels/isa.h"
+#include "platform/isa.h"
 #include "test_support.h"
 
 namespace rayvec {

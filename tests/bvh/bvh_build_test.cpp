@@ -8,7 +8,7 @@
 #include <cstring>
 #include <vector>
 
-#include "bvh/binned_sah_builder.h"
+#include "bvh/binary_bvh.h"
 #include "bvh/wide_bvh.h"
 #include "kernels/triangle_soa.h"
 #include "bvh_scenes.h"

@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "accel/accelerator.h"
-#include "bvh/bvh_kernels.h"
+#include "bvh/bvh_traversal.h"
 #include "kernels/intersector.h"
-#include "kernels/isa.h"
+#include "platform/isa.h"
 
 namespace rayvec::test {
 

@@ -1,4 +1,4 @@
-// The packet box tests of bvh_packet.inl: the forward test (every tmin >= 0: one FMA a slab with
+// The packet box tests of packet_traversal.inl: the forward test (every tmin >= 0: one FMA a slab with
 // the widening folded into the reciprocals and o·r' rounded outward) for uniform-sign packets (the
 // near plane the same for every lane) and mixed-sign ones, and the general test it falls back to
 // (tmin < 0, a zero or −0 direction component, products that could overflow). Whichever test a
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "accel/brute_force.h"
-#include "accel/bvh.h"
+#include "accel/bvh_accelerator.h"
 #include "bvh_cases.h"
 #include "bvh_stream_check.h"
 #include "bvh_scenes.h"
@@ -30,7 +30,7 @@ class BvhPacketBox : public test::BvhCaseTest {
   int expect_exact(const TriangleMesh& mesh, const std::vector<Ray>& rays) {
     BvhOptions options;
     options.width = GetParam().width;
-    const Bvh bvh(mesh, config(), options);
+    const BvhAccelerator bvh(mesh, config(), options);
     const BruteForce brute(mesh, config());
     return test::expect_stream_exact(bvh, brute, rays);
   }

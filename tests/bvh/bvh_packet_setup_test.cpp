@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "accel/brute_force.h"
-#include "accel/bvh.h"
+#include "accel/bvh_accelerator.h"
 #include "bvh_cases.h"
 #include "bvh_scenes.h"
 
@@ -34,7 +34,7 @@ void expect_stream_exact(const TriangleMesh& mesh, const TraceConfig& config, in
                          const std::vector<Ray>& rays) {
   BvhOptions options;
   options.width = width;
-  const Bvh bvh(mesh, config, options);
+  const BvhAccelerator bvh(mesh, config, options);
   const BruteForce brute(mesh, config);
   std::vector<Hit> stream(rays.size(), Hit{0.5f, 1.0f, 2.0f, 7});  // garbage to be overwritten
   bvh.closest_stream(rays.data(), stream.data(), rays.size());
@@ -66,7 +66,7 @@ TEST_P(BvhPacketSetup, UntraceableLanesMissAndTheOthersMatchSingleRays) {
     }
   }
   expect_stream_exact(soup, config(), GetParam().width, rays);
-  const Bvh bvh(soup, config());
+  const BvhAccelerator bvh(soup, config());
   for (const Ray& r : rays) hits += bvh.closest(r).hit();
   EXPECT_GT(hits, 300);  // the clean lanes do hit
 }

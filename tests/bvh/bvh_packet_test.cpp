@@ -1,6 +1,6 @@
-// Ray packets (Bvh::closest_stream) must give every lane exactly its single-ray answer and brute
+// Ray packets (BvhAccelerator::closest_stream) must give every lane exactly its single-ray answer and brute
 // force's: same triangle id and bit-identical t, u, v (ties to the lowest id). With the float `mt`
-// table the leaves of AVX2/AVX-512 packets go through the ray-packet kernel (kernels/mt_packet.inl,
+// table the leaves of AVX2/AVX-512 packets go through the ray-packet kernel (bvh/packet_leaf.inl,
 // one triangle against all lanes per step); packets whose lanes mix tmin = 0 and tmin != 0, and
 // the other intersectors, take the per-lane fallback, tested here too. Every ISA this CPU has; the
 // others are skipped and named (scalar has no packets: its stream is single rays).
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "accel/brute_force.h"
-#include "accel/bvh.h"
-#include "bvh/bvh_kernels.h"
+#include "accel/bvh_accelerator.h"
+#include "bvh/bvh_traversal.h"
 #include "bvh_cases.h"
 #include "bvh_stream_check.h"
 #include "bvh_scenes.h"
@@ -51,7 +51,7 @@ class BvhPacket : public test::BvhCaseTest {
       options.leaves_from_kernel = false;
     }
     options.width = GetParam().width;
-    const Bvh bvh(mesh, config(), options);
+    const BvhAccelerator bvh(mesh, config(), options);
     const BruteForce brute(mesh, config());
     return test::expect_stream_exact(bvh, brute, rays);
   }
@@ -94,7 +94,7 @@ TEST_P(BvhPacket, EdgeAndVertexTiesGoToTheLowestId) {
 TEST_P(BvhPacket, PerLaneTminAndTmaxLimitsAtTheHitDistance) {
   const TriangleMesh soup = test::random_soup(2000, 0.2f, 22);
   const std::vector<Ray> base = camera_tiles({0.0f, 0.0f, 2.5f}, 32, 32, 0.5f, 0.25f);
-  const Bvh probe(soup, config());
+  const BvhAccelerator probe(soup, config());
   std::vector<Ray> rays = base;
   int limited = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "rays/ray.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec::test {
 

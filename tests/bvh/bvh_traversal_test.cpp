@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "accel/brute_force.h"
-#include "accel/bvh.h"
-#include "bvh/bvh_kernels.h"
+#include "accel/bvh_accelerator.h"
+#include "bvh/bvh_traversal.h"
 #include "bvh_cases.h"
 #include "bvh_scenes.h"
 
@@ -40,7 +40,7 @@ class BvhTraversal : public test::BvhCaseTest {
     }
     options.width = GetParam().width;
     options.direct_leaf = direct_leaf_;
-    const Bvh bvh(mesh, config(), options);
+    const BvhAccelerator bvh(mesh, config(), options);
     const HitFilter odd_only{[](const void*, int32_t id) { return id % 2 == 0; }, nullptr};
     int hits = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -62,7 +62,7 @@ class BvhTraversal : public test::BvhCaseTest {
     if (mesh.size() > 0 && rays.size() > 100) EXPECT_GT(hits, 0) << "the scene tests nothing";
   }
 
-  int direct_leaf_ = -1;  // BvhOptions::direct_leaf of expect_same's Bvh
+  int direct_leaf_ = -1;  // BvhOptions::direct_leaf of expect_same's BvhAccelerator
 };
 
 TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
@@ -88,7 +88,7 @@ TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   table.direct_leaf = 0;
   direct.direct_leaf = 1;
   const TriangleMesh one = test::random_soup(10, 0.1f, 23);
-  const Bvh a(one, config(), table), b(one, config(), direct);
+  const BvhAccelerator a(one, config(), table), b(one, config(), direct);
   const bool has_direct = GetParam().isa == Isa::avx512 && GetParam().intersector == Intersector::mt;
   if (has_direct) EXPECT_NE(a.traversal().closest, b.traversal().closest);
   else EXPECT_EQ(a.traversal().closest, b.traversal().closest);  // no direct form: both the table call
@@ -133,7 +133,7 @@ TEST_P(BvhTraversal, MatchesBruteForceOnCoplanarTrianglesAndAxisParallelRays) {
 }
 
 // tmin < 0 takes the box test with per-node widening, tmin >= 0 (also -0) the forward one whose
-// widening is folded into scaled reciprocals (bvh_traversal.inl): both must equal brute force.
+// widening is folded into scaled reciprocals (single_ray_traversal.inl): both must equal brute force.
 TEST_P(BvhTraversal, MatchesBruteForceWithNegativeAndZeroTmin) {
   std::vector<Ray> rays = test::random_rays(1200, 1.5f, 15);
   for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -179,7 +179,7 @@ TEST_P(BvhTraversal, DeepTreesMatchBruteForce) {
   options.sah = sah;
   options.leaves_from_kernel = false;
   options.width = GetParam().width;
-  const Bvh bvh(chain, config(), options);
+  const BvhAccelerator bvh(chain, config(), options);
   EXPECT_GE(bvh.tree().depth(), 8u) << "the chain should make a deep tree";
   std::vector<Ray> rays;
   for (int i = 0; i < 200; ++i) {
@@ -195,7 +195,7 @@ TEST_P(BvhTraversal, PacketsMatchSingleRays) {
   const TriangleMesh s = test::sphere(1.0f, 30, 40);
   BvhOptions options;
   options.width = GetParam().width;
-  const Bvh bvh(s, config(), options);
+  const BvhAccelerator bvh(s, config(), options);
   std::vector<Ray> rays;
   for (int y = 0; y < 32; ++y)  // 4x4 tiles of a camera at z = 3 looking at the sphere
     for (int x = 0; x < 32; ++x) {
@@ -223,7 +223,7 @@ TEST_P(BvhTraversal, PacketsMatchSingleRays) {
 TEST_P(BvhTraversal, NonFiniteRaysMiss) {
   const TriangleMesh s = test::sphere(1.0f, 10, 10);
   const float nan = std::nanf(""), inf = kInf;
-  const Bvh bvh(s, config());
+  const BvhAccelerator bvh(s, config());
   for (const Ray& r : {Ray{{nan, 0, 0}, {1, 0, 0}}, Ray{{0, 0, 0}, {nan, 1, 0}},
                        Ray{{inf, 0, 0}, {-1, 0, 0}}, Ray{{0, 0, 0}, {inf, 0, 0}},
                        Ray{{0, 0, 0}, {1, 0, 0}, nan, 5}, Ray{{0, 0, 0}, {1, 0, 0}, 0, nan}}) {

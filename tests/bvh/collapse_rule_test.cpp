@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "bvh/binned_sah_builder.h"
+#include "bvh/binary_bvh.h"
 #include "bvh/wide_bvh.h"
 #include "bvh_scenes.h"
 

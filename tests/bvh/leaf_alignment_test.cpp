@@ -5,12 +5,12 @@
 
 #include <vector>
 
-#include "accel/bvh.h"
-#include "bvh/binned_sah_builder.h"
-#include "bvh/bvh_kernels.h"
+#include "accel/bvh_accelerator.h"
+#include "bvh/binary_bvh.h"
+#include "bvh/bvh_traversal.h"
 #include "bvh/leaf_alignment.h"
 #include "bvh/wide_bvh.h"
-#include "kernels/isa.h"
+#include "platform/isa.h"
 #include "kernels/triangle_soa.h"
 #include "bvh_scenes.h"
 
@@ -71,8 +71,8 @@ TEST(LeafAlignment, PaddingSlotsBecomeZeroAreaSlotsWithoutId) {
   EXPECT_EQ(wide.leaf_count(), leaf_contents(tree).size());
 }
 
-// The default node width (bvh_kernels.h): 16 on the SIMD ISAs for deep trees, and on Intel's AVX-512
-// for every tree, 8 otherwise; and a Bvh's leaves start on its kernel's width.
+// The default node width (bvh_traversal.h): 16 on the SIMD ISAs for deep trees, and on Intel's AVX-512
+// for every tree, 8 otherwise; and a BvhAccelerator's leaves start on its kernel's width.
 TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
   for (const char* amd_or_other : {"AuthenticAMD", "HygonGenuine", ""}) {
     EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles, amd_or_other), 16);
@@ -87,9 +87,9 @@ TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
   }
   EXPECT_EQ(default_bvh_width(Isa::avx512, 100),
             default_bvh_width(Isa::avx512, 100, cpu_features().vendor));  // this CPU's vendor
-  if (!isa_supported(Isa::avx512)) GTEST_SKIP() << "no AVX-512 on this CPU: the built-Bvh half is skipped";
+  if (!isa_supported(Isa::avx512)) GTEST_SKIP() << "no AVX-512 on this CPU: the built-BvhAccelerator half is skipped";
   const TriangleMesh big = test::random_soup(int(kWideNodeTriangles), 0.01f, 3);
-  const Bvh bvh(big, TraceConfig{Isa::avx512, Intersector::mt});
+  const BvhAccelerator bvh(big, TraceConfig{Isa::avx512, Intersector::mt});
   EXPECT_EQ(bvh.tree().width(), 16);
   const auto* nodes = static_cast<const WideNode<16>*>(bvh.tree().arrays().nodes);
   for (uint32_t n = 0; n < bvh.tree().node_count(); ++n)

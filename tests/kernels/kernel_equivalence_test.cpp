@@ -17,10 +17,10 @@
 
 #include "bench/paper_scene.h"
 #include "kernels/closest_batch.h"
-#include "kernels/kernel_table.h"
-#include "kernels/paper_baselines.h"
+#include "kernels/triangle_kernels.h"
+#include "bench/paper_baselines.h"
 #include "kernels/triangle_soa.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 namespace {

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "kernels/kernel_table.h"
+#include "kernels/triangle_kernels.h"
 #include "kernels/triangle_soa.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 #include "test_support.h"
 
 namespace rayvec {

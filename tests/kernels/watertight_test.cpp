@@ -8,9 +8,9 @@
 
 #include "accel/accelerator.h"
 #include "accuracy/hard_cases.h"
-#include "kernels/kernel_table.h"
+#include "kernels/triangle_kernels.h"
 #include "kernels/triangle_soa.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "kernels/large_buffer.h"
+#include "platform/large_buffer.h"
 
 namespace rayvec {
 namespace {

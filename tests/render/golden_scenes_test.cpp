@@ -1,5 +1,5 @@
 // Golden images: every scene in scenes/ rendered small on every ISA the CPU has and compared with the
-// reference in tests/images/ through `rayvec compare`, the way a user writes a regression test.
+// reference in tests/data/images/ through `rayvec compare`, the way a user writes a regression test.
 // Thresholds (PNG values, sRGB-encoded in [0,1]): RMSE <= 0.01 and no pixel off by more than 0.25 —
 // loose enough for FMA/no-FMA rounding at silhouette pixels across ISAs, tight enough that a wrong
 // light, material or effect moves the RMSE far beyond it (see GoldenScenes.CompareCatchesAWrongImage).
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "kernels/isa.h"
+#include "platform/isa.h"
 #include "test_support.h"
 
 namespace rayvec {
@@ -24,7 +24,7 @@ std::string scene(const std::string& name) {
   return std::string(RAYVEC_SOURCE_DIR) + "/scenes/" + name + ".json";
 }
 std::string reference(const std::string& name) {
-  return std::string(RAYVEC_SOURCE_DIR) + "/tests/images/" + name + ".png";
+  return std::string(RAYVEC_SOURCE_DIR) + "/tests/data/images/" + name + ".png";
 }
 
 std::string render_small(const std::string& name, Isa isa, const std::string& dir) {

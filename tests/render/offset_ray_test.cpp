@@ -8,7 +8,7 @@
 
 #include "accel/accelerator.h"
 #include "render/offset_ray.h"
-#include "scene/mesh.h"
+#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 namespace {
