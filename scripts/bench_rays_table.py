@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Runs `rayvec bench rays --vs-embree --json` several times per mesh and thread count and prints the
-median of each number as the Markdown table of docs/benchmarks.md ("BVH vs Embree").
+median of each number as a Markdown table like those of docs/benchmarks.md ("Current results").
 
     scripts/bench_rays_table.py RAYVEC_BINARY MESH.obj [MESH.obj ...] [--threads 1 2] [--runs 3]
                                 [--size 1024x1024] [--isa avx2] [--builds 5]

@@ -14,7 +14,7 @@ namespace rayvec {
 
 struct BvhOptions {
   SahConfig sah;
-  // Size leaves to the triangle kernel (measured, docs/benchmarks.md): SAH leaf cost per
+  // Size leaves to the triangle kernel (benchmarks.md#decision-leaf-size): SAH leaf cost per
   // kernel-width block of triangles and up to two blocks per leaf (AVX-512: 16 and 32, AVX2: 8 and
   // 16; scalar keeps sah's 4 and 8). false: use sah.max_leaf and sah.leaf_block as given.
   bool leaves_from_kernel = true;

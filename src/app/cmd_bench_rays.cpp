@@ -1,6 +1,6 @@
 // `rayvec bench rays MODEL.obj`: BVH build time, bytes per triangle, and Mrays/s of primary (single
 // rays and 4×4 packets), shadow (any-hit) and incoherent rays, optionally against Embree 3 in the
-// same run (issue 3). The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
+// same run. The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
 #include <omp.h>
 
 #include <chrono>

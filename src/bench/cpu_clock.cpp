@@ -13,9 +13,9 @@ double thread_cpu_seconds() {
 double measure_clock_ghz() {
   // 16 dependent adds per iteration: the loop's own dec/jnz run in parallel with the chain, so the
   // chain's latency (1 cycle per add) is the only bound. Written in asm so no compiler folds it.
-  // Register + register: Intel cores since Golden Cove fold chains of add-immediate at rename
-  // (Xeon model 207 ran 16 `add $1` in about 3 cycles, i.e. read 13-14 GHz); a register operand
-  // has to go through the adder.
+  // Register + register: recent Intel cores fold chains of add-immediate at rename (16 `add $1`
+  // can retire in a few cycles and read several times the real clock); a register operand has to
+  // go through the adder (benchmarks.md#decision-clock-probes).
   constexpr long kIterations = 2'500'000;  // 40 M adds ≈ 10 ms at 4 GHz
   long x = 0, i = kIterations;
   const long one = 1;

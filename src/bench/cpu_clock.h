@@ -1,6 +1,6 @@
-// The core clock, measured: this VM has no hardware performance counters (perf stat shows none) and
-// its frequency moves with the host's load (3.5–3.8 GHz seen on the AMD EPYC of docs/benchmarks.md),
-// so tests per cycle — the unit of issue 2's kernel target — need a clock taken in the same run.
+// The core clock, measured: a virtual machine often has no hardware performance counters and its
+// frequency moves with the host's load, so tests per cycle — the unit the kernel is judged in — need
+// a clock taken in the same run (see benchmarks.md#decision-clock-probes).
 #pragma once
 
 namespace rayvec {
@@ -9,7 +9,7 @@ namespace rayvec {
 // (one add per cycle on every x86-64 core since the Pentium Pro) timed on the thread's CPU-time
 // clock, so time the thread spends descheduled does not count. About 10 ms. Caveat: it measures
 // the clock, not the share of the core — when a host hyperthread sibling competes for the vector
-// units, a kernel gets fewer tests per measured cycle (docs/benchmarks.md, "Brute-force kernel").
+// units, a kernel gets fewer tests per measured cycle (benchmarks.md#decision-clock-probes).
 double measure_clock_ghz();
 
 // Seconds on the calling thread's CPU-time clock (CLOCK_THREAD_CPUTIME_ID).

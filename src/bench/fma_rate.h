@@ -1,11 +1,10 @@
-// The vector throughput this thread gets, measured. On this KVM machine the brute-force kernel
-// sometimes runs 15–30 % slower for seconds at a time while the clock (cpu_clock.h, a latency
+// The vector throughput this thread gets, measured. On a shared virtual machine the brute-force
+// kernel can run markedly slower for seconds at a time while the clock (cpu_clock.h, a latency
 // chain) barely moves. A latency chain cannot see a neighbour sharing the vector pipes; a
 // throughput loop can. So `bench paper` measures both and prints FMAs per cycle next to the
-// kernel's tests per cycle: about 2 on an uncontended core with two FMA pipes (this machine reads
-// 2.0–2.1: the clock probe seems to read a few percent low), less while the pipes are shared. A
-// slow run with FMA/c still at 2 was slowed by something else — caches or memory, not the pipes
-// (docs/benchmarks.md, "Slow phases").
+// kernel's tests per cycle: about 2 on an uncontended core with two FMA pipes, less while the pipes
+// are shared. A slow run with FMA/c still at 2 was slowed by something else — caches or memory, not
+// the pipes (benchmarks.md#decision-clock-probes).
 #pragma once
 
 #include "platform/isa.h"

@@ -65,8 +65,9 @@ struct ScalingResult {
 uint32_t scaled_side(uint32_t rays, uint32_t divisor);
 
 // Timed runs of each vectorized Table 1 column at least (unless min_seconds is 0, i.e. testing): one
-// run of mod2 takes ~0.5 s, over the 0.2 s minimum, so it used to be a single sample — on this shared
-// VM single samples of the same kernel differ by up to 30 % (docs/benchmarks.md, "Brute-force kernel").
+// run of mod2 takes ~0.5 s, over the 0.2 s minimum, so it would otherwise be a single sample — and on
+// a shared virtual machine single samples of the same kernel differ widely
+// (benchmarks.md#decision-bench-timing).
 inline constexpr int kVectorizedMinRuns = 5;
 
 // One Table 1 row on one thread: original and optimized (unless !baselines) and the vectorized

@@ -1,4 +1,4 @@
-// The ray sets of `rayvec bench rays` (issue 3), defined exactly so another tracer can reproduce them:
+// The ray sets of `rayvec bench rays`, defined exactly so another tracer can reproduce them:
 // primary rays of a pinhole camera that frames the mesh, shadow rays toward a light above the eye,
 // and incoherent rays on the hemisphere of each primary hit's geometric normal.
 #pragma once

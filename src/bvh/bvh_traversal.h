@@ -38,21 +38,19 @@ struct BvhWidths {
 BvhWidths bvh_widths(Isa isa);
 
 // The node width a BVH over `triangles` triangles gets by default on a CPU whose cpuid vendor is
-// `vendor`, as measured (docs/benchmarks.md, "Blocked rows, 16-wide nodes, huge pages" and "An
-// Intel Xeon"): 16 on AVX-512 and AVX2 from kWideNodeTriangles triangles up (deep trees: fewer
-// levels, so fewer dependent node fetches per ray), else 8 — except AVX-512 on Intel, 16 at every
-// size (Xeon model 207, 4k-triangle meshes: single rays +7–19 %, packets within ±3 %; on AMD Zen 5
-// small meshes lost up to 11 % of their shadow rays with 16-wide nodes). The two-argument form
-// uses this CPU's vendor.
+// `vendor`: 16 on AVX-512 and AVX2 from kWideNodeTriangles triangles up (deep trees: fewer levels,
+// so fewer dependent node fetches per ray), else 8 — except AVX-512 on Intel, 16 at every size
+// (small meshes gain there and lose on AMD; see benchmarks.md#decision-node-width for the numbers
+// of each vendor). The two-argument form uses the running CPU's vendor.
 inline constexpr std::size_t kWideNodeTriangles = 32768;
 int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
 int default_bvh_width(Isa isa, std::size_t triangles);
 
 // Whether the closest-hit traversal calls the float `mt` leaf kernel directly (inlined) instead of
-// through the kernel table, on a CPU whose cpuid vendor is `vendor`: AVX-512 on Intel only, as
-// measured (docs/benchmarks.md, "The leaf kernel called directly"): on the Xeon of 2026-12-01
-// incoherent rays +5 % on the 1M sphere, on the AMD Zen 5 of 2026-11-22 −4 %. Other ISAs have no
-// direct form. Same results either way.
+// through the kernel table, on a CPU whose cpuid vendor is `vendor`: AVX-512 on Intel only, where
+// it saves the save and reload of the traversal's ray registers around every leaf call; on AMD it
+// measured slower (benchmarks.md#decision-direct-leaf-call). Other ISAs have no direct form. Same
+// results either way.
 bool default_direct_leaf(Isa isa, std::string_view vendor);
 
 // The table for (isa, width), with the direct leaf call where `direct_leaf` and the ISA has one;

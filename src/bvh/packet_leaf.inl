@@ -10,8 +10,7 @@
 // its ray on the same slot range — same triangle id, bit-identical t, u, v, ties to the lowest id.
 // The arithmetic is mt_numerator_values and the ordered tests of mt_numerators_core (only the
 // triangle comes broadcast instead of loaded; the brute-force kernel's conservative one-mask sign
-// pre-test skips the steps no lane can pass: +1.4-2.7 % on the spheres' primary packets,
-// scripts/bvh_bench/packet_bench), then the same exact stage t = tn/|det| with tmin <= t < best,
+// pre-test skips the steps no lane can pass; benchmarks.md#decision-packet-leaf-kernel), then the same exact stage t = tn/|det| with tmin <= t < best,
 // and u = (0 − un)/|det|, v = vn/|det| for the winner. Slots are visited in increasing order with
 // a strict `<`, so of equal t the lowest slot, hence the lowest id (ids increase inside a range),
 // wins, as in the single-ray lane reduction; the comparison with the lane's previous hit (earlier leaves) is mt_finish's.
@@ -74,8 +73,8 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
     hi = best_t * widen;
     found |= bits(m);
   };
-  // Two triangles per iteration, one branch on both pre-tests (+1.6-3.3 % on the 4k sphere,
-  // +0.5-0.8 % on the 1M sphere); the steps that pass are still taken in slot order.
+  // Two triangles per iteration, one branch on both pre-tests (benchmarks.md#decision-packet-leaf-kernel);
+  // the steps that pass are still taken in slot order.
   uint32_t i = begin;
   for (; i + 1 < end; i += 2) {
     const MtNumerators<V> c0 = mt_numerator_values<V>(T, MtTriangleBroadcast<V>{i}, q.r);

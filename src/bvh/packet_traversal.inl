@@ -74,8 +74,8 @@ RAYVEC_INLINE float vmax_abs(float a, float b) {
 }
 
 // The memory a stack entry will read when popped: its node, or its leaf's triangle rows (the
-// rows mt_packet_closest reads). Issued on push, so the loads overlap the nearer children's work;
-// same-process A/B, 1 thread: +1.6-3 % on the 1M sphere's primary packets, neutral on the 4k one.
+// rows mt_packet_closest reads). Issued on push, so the loads overlap the nearer children's work
+// (benchmarks.md#decision-prefetch).
 template <int N>
 RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& t, uint32_t ref) {
   if (!(ref & kLeafFlag)) {
@@ -94,10 +94,8 @@ RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& 
 // The children of a node that some lane of the packet may enter: all of them, or with a hull
 // (uniform forward packets) those whose box the hull of the packet's lanes enters — one test of
 // every child against the whole packet (B::hits_hull) instead of one test a child. A camera
-// packet enters few of a wide node's children, so this skips most of the per-child tests. On the
-// Xeon of 2026-12-01 (packet_bench, same process, 1 thread) primary packets gained 13 % (4k
-// sphere), 16 % (1M sphere) and 26 % (Wuson) with AVX-512, 7 % and 12 % (spheres) with AVX2.
-// It only filters: a child it passes is tested lane by lane as before, so the results are
+// packet enters few of a wide node's children, so this skips most of the per-child tests
+// (benchmarks.md#decision-hull-pretest). It only filters: a child it passes is tested lane by lane as before, so the results are
 // unchanged bit for bit.
 template <class B, bool WithHull>
 struct PacketChildren;
@@ -116,9 +114,8 @@ struct PacketChildren<B, true> {
 
 // The traversal proper, from the root with the lanes `lanes`, box tests by `boxes` (PacketBoxes
 // or PK::Forward), children pre-tested by `children`; the state set up by bvh_closest_packet.
-// `boxes` and `children` by reference: passed by value, their 1.3 KB of registers were copied
-// onto the stack for every packet (rep movsq), which cost 22 % of the 4k sphere's primary packets
-// and 12 % of the 1M sphere's (packet_bench, same process).
+// `boxes` and `children` by reference: passed by value, their 1.3 KB of registers are copied onto
+// the stack for every packet (rep movsq; benchmarks.md#decision-packet-box-by-reference).
 template <class B, class PK, class Boxes, bool WithHull>
 void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                          const Ray* rays, Hit* hits, unsigned lanes, Boxes& boxes,
@@ -163,7 +160,7 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
         if (m == 0) continue;
         // order by the entry distance of the lowest hit lane (one load; the lanes of a coherent
         // packet enter a box at nearly the same t); the minimum over the lanes, a reduction, is
-        // taken only for the entries pushed, whose pop test needs it (+1 % on the 1M sphere)
+        // taken only for the entries pushed, whose pop test needs it
         const float d = tn[count][__builtin_ctz(m)];
         const int h = count;
         int j = count++;
@@ -226,9 +223,8 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
   static_assert(sizeof(Ray) == 8 * sizeof(float), "PK::load_rays reads a Ray as 8 floats");
   // Streams of packets (closest_stream, tiles of a frame) lie one after the other: start loading
   // the rays and hits of the packet three ahead now, as the time of one packet is far too short
-  // for the hardware to hide the memory latency of its first loads (one ahead: +24 % on the 4k
-  // sphere's primary packets, +7 % on the 1M sphere; three ahead instead of one: +2 % and +0.7 %;
-  // scripts/bvh_bench/packet_bench). A prefetch never faults, so reaching past the end of the
+  // for the hardware to hide the memory latency of its first loads (benchmarks.md#decision-prefetch).
+  // A prefetch never faults, so reaching past the end of the
   // caller's arrays is harmless (the addresses are formed as integers, not as pointers past them).
   const uintptr_t ahead_rays = reinterpret_cast<uintptr_t>(rays) + 3 * P * sizeof(Ray);
   const uintptr_t ahead_hits = reinterpret_cast<uintptr_t>(hits) + 3 * P * sizeof(Hit);
@@ -298,8 +294,7 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
   // down: above the exact exit by more than 0.9·eps·|t| when it is > 0; an exact exit < 0 misses
   // in both (tmin >= 0), and an exit of exactly 0 gives t' >= 0. Without the outward rounding the
   // error of o·r' (u·|o·r'|, not relative to t) loses boxes far from the coordinate origin
-  // (tests/bvh/bvh_packet_box_test.cpp). Same-process A/B, 1 thread (packet_bench): +5-7 % on the
-  // 4k and 1M spheres' primary packets, of which the uniform-sign case gives 1.5-2.5 points.
+  // (tests/bvh/bvh_packet_box_test.cpp). The gain: benchmarks.md#decision-packet-setup.
   const vfloat big = vfloat::broadcast(0x1p120f);
   vfloat m = vmax(vmax(abs(vfloat::load(soa[0])), abs(vfloat::load(soa[1]))), abs(vfloat::load(soa[2])));
   for (int a = 0; a < 3; ++a) m = vmax(m, vfloat::broadcast(vmax_abs(root_lo[a], root_hi[a])));

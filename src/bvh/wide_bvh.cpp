@@ -11,10 +11,9 @@
 namespace rayvec {
 namespace {
 
-// Why both rules of CollapseRule: neither wins on every tree. On the bench meshes the count rule cut
-// node visits per ray 2.5-6 % for AVX-512's 16-wide trees and raised them 4-27 % for 8-wide trees
-// and 7 % for AVX2's 16-wide tree of the 1M sphere (docs/benchmarks.md, "An Intel Xeon,
-// 2026-12-01"). So by default WideBvh collapses both ways and keeps the tree of the lower SAH node
+// Why both rules of CollapseRule: neither wins on every tree. On the bench meshes the count rule
+// cuts node visits per ray for 16-wide trees and raises them for 8-wide ones
+// (benchmarks.md#decision-collapse-rule). So by default WideBvh collapses both ways and keeps the tree of the lower SAH node
 // cost (the expected node visits of a random ray up to a factor; the leaves are the same either way).
 
 constexpr std::size_t kParallelCollapseNodes = 256;  // binary nodes

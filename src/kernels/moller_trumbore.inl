@@ -11,7 +11,8 @@
 // ties resolved towards the lower triangle id. The float `mt` path (closest_mt_float, below) goes
 // further: precomputed normal, a conservative division-free depth pre-test against the nearest hit
 // of any lane, divisions only for the final hit, and two rays per triangle load (closest_pair).
-// Each choice and what it measured: docs/benchmarks.md, "Brute-force kernel".
+// Each choice and what it measured: benchmarks.md#decision-precomputed-normal,
+// #decision-depth-pretest, #decision-early-outs, #decision-fma and #decision-rays-per-triangle-load.
 
 template <class V>
 struct RayLanes {
@@ -283,8 +284,8 @@ RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const 
   return out;
 }
 
-// The brute-force pre-test with ONE mask instruction: on Zen 5 every instruction that writes a mask
-// register competes with the 19 multiplies/FMAs of a step for the same two pipes, while adds and
+// The brute-force pre-test with ONE mask instruction (benchmarks.md#decision-sign-pretest): on AMD's
+// Zen 5 every instruction that writes a mask register competes with the 19 multiplies/FMAs of a step for the same two pipes, while adds and
 // bitwise ops have pipes of their own. So the five tests are sign bits — u·|det| = 0 − un,
 // v·|det| = vn + 0, (1 − u − v)·|det| = |det| − (u + v)·|det|, t·|det| − lo·|det| (t·|det| + 0
 // for tmin = 0) and hi·|det| − t·|det| must all have a clear sign (the +0 turns −0 into +0, so

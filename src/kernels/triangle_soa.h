@@ -9,7 +9,7 @@
 //   kernel first, then the triangle ids (read for every hit: beside the rows, not in a separate
 //   array whose line is one more cache miss per hit leaf), then v1 and v2. A BVH leaf is then one
 //   contiguous run of memory instead of a piece of each of 12 arrays megabytes apart
-//   (docs/benchmarks.md, "Blocked rows, 16-wide nodes, huge pages"). Slot i of row pointer p is
+//   (benchmarks.md#decision-blocked-rows). Slot i of row pointer p is
 //   p[slot_offset(i)]; a SIMD step loads W lanes from a slot that is a multiple of W (W divides
 //   kBlock), so it never crosses a block.
 // Rows are 64-byte aligned; the slots are padded with zero-area triangles (id −1) to a multiple of
