@@ -1,7 +1,7 @@
 // The ray–triangle kernel body, written once over a vector type V (vfloat or vdouble of the ISA) and
 // compiled per ISA: triangle_kernels_<isa>.cpp (and bvh_traversal_<isa>.cpp, for the leaves)
-// includes this inside namespace rayvec::<isa>, after that ISA's simd header. No std:: calls here — ISA units must not instantiate inline code shared with
-// baseline units.
+// includes this inside namespace rayvec::<isa>, after that ISA's simd header. No std:: calls here —
+// ISA units must not instantiate inline code shared with baseline units.
 //
 // Follows Sena, Sampaio, Nascimento & Nery (2018): one ray broadcast to all lanes, W triangles of the
 // SoA arrays per step, masks with early-outs, blend of the nearest t and triangle index per lane,
