@@ -1,6 +1,7 @@
-// BinaryBvh and its builder, build_binned_sah: a top-down binary BVH over a triangle mesh by the surface area heuristic
-// (MacDonald & Booth 1990), evaluated on centroid bins as in Wald (2007) "On fast Construction of
-// SAH-based Bounding Volume Hierarchies". Subtrees are built in parallel with OpenMP tasks.
+// BinaryBvh and its builder, build_binned_sah: a top-down binary BVH over a triangle mesh by the
+// surface area heuristic (MacDonald & Booth 1990), evaluated on centroid bins as in Wald (2007) "On
+// fast Construction of SAH-based Bounding Volume Hierarchies". Subtrees are built in parallel with
+// OpenMP tasks.
 #pragma once
 #include <cstdint>
 #include <vector>

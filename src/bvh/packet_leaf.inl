@@ -10,14 +10,15 @@
 // its ray on the same slot range — same triangle id, bit-identical t, u, v, ties to the lowest id.
 // The arithmetic is mt_numerator_values and the ordered tests of mt_numerators_core (only the
 // triangle comes broadcast instead of loaded; the brute-force kernel's conservative one-mask sign
-// pre-test skips the steps no lane can pass; benchmarks.md#decision-packet-leaf-kernel), then the same exact stage t = tn/|det| with tmin <= t < best,
-// and u = (0 − un)/|det|, v = vn/|det| for the winner. Slots are visited in increasing order with
-// a strict `<`, so of equal t the lowest slot, hence the lowest id (ids increase inside a range),
-// wins, as in the single-ray lane reduction; the comparison with the lane's previous hit (earlier leaves) is mt_finish's.
-// The upper pre-test threshold is per lane here (its own best·(1 + 2^-20)) where the single-ray
-// kernel shares the nearest of its lanes; both are conservative (every triangle that can be nearer
-// passes), so the exact stage alone decides — outside subnormal |det|, where no pre-test product
-// is accurate to 2^-20 and the two layouts may disagree about a hit that far from normal range.
+// pre-test skips the steps no lane can pass; benchmarks.md#decision-packet-leaf-kernel), then the
+// same exact stage t = tn/|det| with tmin <= t < best, and u = (0 − un)/|det|, v = vn/|det| for the
+// winner. Slots are visited in increasing order with a strict `<`, so of equal t the lowest slot,
+// hence the lowest id (ids increase inside a range), wins, as in the single-ray lane reduction; the
+// comparison with the lane's previous hit (earlier leaves) is mt_finish's. The upper pre-test
+// threshold is per lane here (its own best·(1 + 2^-20)) where the single-ray kernel shares the
+// nearest of its lanes; both are conservative (every triangle that can be nearer passes), so the
+// exact stage alone decides — outside subnormal |det|, where no pre-test product is accurate to
+// 2^-20 and the two layouts may disagree about a hit that far from normal range.
 //
 // Only `mt` in float has this kernel; paper, mt64, watertight and watertight64 packets keep the
 // per-lane fallback (the single-ray kernel per active lane), as does a packet whose lanes mix

@@ -93,10 +93,10 @@ RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& 
 
 // The children of a node that some lane of the packet may enter: all of them, or with a hull
 // (uniform forward packets) those whose box the hull of the packet's lanes enters — one test of
-// every child against the whole packet (B::hits_hull) instead of one test a child. A camera
-// packet enters few of a wide node's children, so this skips most of the per-child tests
-// (benchmarks.md#decision-hull-pretest). It only filters: a child it passes is tested lane by lane as before, so the results are
-// unchanged bit for bit.
+// every child against the whole packet (B::hits_hull) instead of one test a child. A camera packet
+// enters few of a wide node's children, so this skips most of the per-child tests
+// (benchmarks.md#decision-hull-pretest). It only filters: a child it passes is tested lane by lane
+// as before, so the results are unchanged bit for bit.
 template <class B, bool WithHull>
 struct PacketChildren;
 template <class B>

@@ -13,8 +13,9 @@ namespace {
 
 // Why both rules of CollapseRule: neither wins on every tree. On the bench meshes the count rule
 // cuts node visits per ray for 16-wide trees and raises them for 8-wide ones
-// (benchmarks.md#decision-collapse-rule). So by default WideBvh collapses both ways and keeps the tree of the lower SAH node
-// cost (the expected node visits of a random ray up to a factor; the leaves are the same either way).
+// (benchmarks.md#decision-collapse-rule). So by default WideBvh collapses both ways and keeps the
+// tree of the lower SAH node cost (the expected node visits of a random ray up to a factor; the
+// leaves are the same either way).
 
 constexpr std::size_t kParallelCollapseNodes = 256;  // binary nodes
 

@@ -1,13 +1,13 @@
 // closest_batch: the closest hits of many rays over one triangle range, cache-blocked. Brute force
-// over a large mesh streams every triangle from L3 or memory once per ray (50,000 triangles are
-// 2.4 MB of v0, e1, e2 and ng, more than a typical 1–2 MB L2 per core), so a lone ray is bound by
+// over a large mesh streams every triangle from L3 or memory once per ray (50,000 triangles are 2.4
+// MB of v0, e1, e2 and ng, more than a typical 1–2 MB L2 per core), so a lone ray is bound by
 // memory bandwidth, not arithmetic. Here the range is cut into chunks of kTriangleChunk triangles
-// (8192 × 12 floats = 384 KB, resident in such an L2) and every ray of the batch
-// runs through a chunk before the next chunk is loaded — the batch shares each load, as a ray
-// packet would, while each ray keeps its own kernel call (one ray against W triangles per SIMD
-// step, Sena et al. 2018);
+// (8192 × 12 floats = 384 KB, resident in such an L2) and every ray of the batch runs through a
+// chunk before the next chunk is loaded — the batch shares each load, as a ray packet would, while
+// each ray keeps its own kernel call (one ray against W triangles per SIMD step, Sena et al. 2018);
 // where the table has closest_pair, two rays share each step's loads
-// (benchmarks.md#decision-rays-per-triangle-load). Baseline code: it calls the ISA kernels only through the table.
+// (benchmarks.md#decision-rays-per-triangle-load). Baseline code: it calls the ISA kernels only
+// through the table.
 #pragma once
 #include <cstdint>
 

@@ -284,15 +284,15 @@ RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const 
   return out;
 }
 
-// The brute-force pre-test with ONE mask instruction (benchmarks.md#decision-sign-pretest): on AMD's
-// Zen 5 every instruction that writes a mask register competes with the 19 multiplies/FMAs of a step for the same two pipes, while adds and
-// bitwise ops have pipes of their own. So the five tests are sign bits — u·|det| = 0 − un,
-// v·|det| = vn + 0, (1 − u − v)·|det| = |det| − (u + v)·|det|, t·|det| − lo·|det| (t·|det| + 0
-// for tmin = 0) and hi·|det| − t·|det| must all have a clear sign (the +0 turns −0 into +0, so
-// closed edges stay closed) — ORed and tested once. Conservative: every lane passing the ordered
-// tests (mt_edges, tmin <= t <= hi) passes it; NaN lanes and |det| = 0 may pass too, so the
-// caller must repeat the ordered tests on the rare steps where a lane passes (mt_closest_step).
-// neg_lo = −lo (unused when TminZero).
+// The brute-force pre-test with ONE mask instruction (benchmarks.md#decision-sign-pretest): on
+// AMD's Zen 5 every instruction that writes a mask register competes with the 19 multiplies/FMAs of
+// a step for the same two pipes, while adds and bitwise ops have pipes of their own. So the five
+// tests are sign bits — u·|det| = 0 − un, v·|det| = vn + 0, (1 − u − v)·|det| = |det| − (u +
+// v)·|det|, t·|det| − lo·|det| (t·|det| + 0 for tmin = 0) and hi·|det| − t·|det| must all have a
+// clear sign (the +0 turns −0 into +0, so closed edges stay closed) — ORed and tested once.
+// Conservative: every lane passing the ordered tests (mt_edges, tmin <= t <= hi) passes it; NaN
+// lanes and |det| = 0 may pass too, so the caller must repeat the ordered tests on the rare steps
+// where a lane passes (mt_closest_step). neg_lo = −lo (unused when TminZero).
 template <class V, bool TminZero>
 RAYVEC_INLINE typename V::Mask mt_sign_pretest(const MtNumerators<V>& c, typename V::Mask active,
                                                 V neg_lo, V hi) {
