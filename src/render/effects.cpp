@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "shaders/shading_model.h"
+
 namespace rayvec {
 namespace {
 
@@ -14,10 +16,6 @@ std::string count(int n, const char* what) {
 
 }  // namespace
 
-bool reflects(const Material& m) { return m.illum >= 3 && m.illum <= 7 && max_component(m.Ks) > 0; }
-bool refracts(const Material& m) { return (m.illum == 6 || m.illum == 7) && max_component(m.Tf) > 0; }
-bool uses_fresnel(const Material& m) { return m.illum == 5 || m.illum == 7; }
-
 EffectsPlan plan_effects(const Scene& scene) {
   EffectsPlan plan;
   for (const Light& l : scene.lights)
@@ -26,8 +24,8 @@ EffectsPlan plan_effects(const Scene& scene) {
   for (int32_t m : scene.triangle_material) used[m] = 1;
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     if (!used[i]) continue;
-    plan.reflective_materials += reflects(scene.materials[i]);
-    plan.refractive_materials += refracts(scene.materials[i]);
+    plan.reflective_materials += shaders::reflects(scene.materials[i]);
+    plan.refractive_materials += shaders::refracts(scene.materials[i]);
   }
   return plan;
 }

@@ -1,19 +1,13 @@
 // The effects plan: which kinds of secondary rays a scene can need, derived from its lights and the
-// MTL illumination models of the materials its triangles use. The integrator spawns a ray kind only
-// where the material asks for it; the plan is what `rayvec render` prints at start.
+// shading models of the materials its triangles use (shaders/shading_model.h says which models
+// spawn which rays). The integrator spawns a ray kind only where the material asks for it; the plan
+// is what `rayvec render` prints at start.
 #pragma once
 #include <string>
 
 #include "scene/scene.h"
 
 namespace rayvec {
-
-// MTL illum 3–7 trace reflections, provided Ks > 0.
-bool reflects(const Material& m);
-// MTL illum 6–7 trace refraction (Snell with Ni), provided Tf > 0.
-bool refracts(const Material& m);
-// MTL illum 5 and 7 weight reflection (and 7 refraction) by the Fresnel equations.
-bool uses_fresnel(const Material& m);
 
 struct EffectsPlan {
   int shadow_lights = 0;          // lights with non-zero power (each may cast shadow rays)

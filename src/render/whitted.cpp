@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/effects.h"
 #include "render/offset_ray.h"
 #include "shaders/blinn_phong.h"
 #include "shaders/dielectric.h"
 #include "shaders/fresnel.h"
 #include "shaders/lambert.h"
 #include "shaders/mirror.h"
+#include "shaders/shading_model.h"
 
 namespace rayvec {
 namespace {
@@ -32,6 +32,7 @@ Vec3f Whitted::trace(const Ray& ray, int depth, float weight, RayCounts& rays) c
 Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye,
                             RayCounts& rays) const {
   Vec3f sum{};
+  const bool highlight = shaders::has_highlight(shaders::shading_model(m));
   const Vec3f origin = offset_ray_origin(s.p, s.ng);
   for (const Light& light : scene_.lights) {
     if (max_component(light.power) <= 0) continue;
@@ -57,7 +58,7 @@ Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, 
     if (accel_.occluded(shadow)) continue;
     const Vec3f e = irradiance * cos_s;
     sum += shaders::lambert(kd, e);
-    if (m.illum >= 2) sum += shaders::blinn_phong(m.Ks, m.Ns, s.ns, to_light, to_eye, e);
+    if (highlight) sum += shaders::blinn_phong(m.Ks, m.Ns, s.ns, to_light, to_eye, e);
   }
   return sum;
 }
@@ -67,20 +68,22 @@ Vec3f Whitted::shade(const Ray& ray, const Hit& hit, int depth, float weight,
   if (!hit.hit()) return scene_.background;
   const SurfacePoint s = surface_point(scene_, ray, hit);
   const Material& m = scene_.materials[s.material];
+  const shaders::ShadingModel model = shaders::shading_model(m);
   const Vec3f kd = diffuse_albedo(scene_, s);
-  if (m.illum == 0) return m.Ke + kd;  // MTL 0: constant colour, no lighting
+  if (!shaders::is_lit(model)) return m.Ke + kd;  // constant colour, no lighting
 
   const Vec3f dir = normalize(ray.dir);
   Vec3f radiance = m.Ka * scene_.ambient + direct_light(s, m, kd, -dir, rays);
-  if (refracts(m)) radiance *= m.d;  // dissolve: the local term's opacity over the refraction
+  if (shaders::refracts(m)) radiance *= m.d;  // dissolve: the local term's opacity over the refraction
   radiance += m.Ke;
 
-  // Fresnel reflectance for illum 5 and 7: n1 on the incoming side, n2 beyond.
+  // Fresnel reflectance for the Fresnel models: n1 on the incoming side, n2 beyond.
   const float n1 = s.entering ? 1.0f : m.Ni, n2 = s.entering ? m.Ni : 1.0f;
-  const float fresnel = uses_fresnel(m) ? shaders::fresnel_dielectric(-dot(dir, s.ns), n1, n2) : 1.0f;
+  const float fresnel =
+      shaders::uses_fresnel(model) ? shaders::fresnel_dielectric(-dot(dir, s.ns), n1, n2) : 1.0f;
 
-  if (reflects(m)) {
-    const Vec3f kr = m.Ks * fresnel;
+  if (shaders::reflects(m)) {
+    const Vec3f kr = shaders::reflection_weight(m, fresnel);
     const float w = weight * max_component(kr);
     if (child_worthwhile(depth, w)) {
       Vec3f r = shaders::mirror_direction(dir, s.ns);
@@ -89,8 +92,8 @@ Vec3f Whitted::shade(const Ray& ray, const Hit& hit, int depth, float weight,
       radiance += kr * trace(Ray{offset_ray_origin(s.p, s.ng), r, 0.0f, kInf}, depth + 1, w, rays);
     }
   }
-  if (refracts(m)) {
-    const Vec3f kt = m.Tf * (m.illum == 7 ? 1.0f - fresnel : 1.0f);
+  if (shaders::refracts(m)) {
+    const Vec3f kt = shaders::transmission_weight(m, fresnel);
     const float w = weight * max_component(kt);
     if (child_worthwhile(depth, w)) {
       std::optional<Vec3f> t = shaders::refract_direction(dir, s.ns, n1 / n2);

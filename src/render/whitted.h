@@ -1,7 +1,8 @@
 // Whitted (1980) recursive ray tracing: local lighting (Lambert + Blinn–Phong under point and
 // directional lights, with shadow rays), perfect reflection and refraction, with the adaptive depth
 // control of Hall & Greenberg (1983): each ray carries the weight it contributes to the pixel, and a
-// child whose weight falls below `min_contribution` is not traced.
+// child whose weight falls below `min_contribution` is not traced. Which of these a hit gets is asked
+// of its material's shading model (shaders/shading_model.h).
 #pragma once
 #include "accel/accelerator.h"
 #include "render/render_stats.h"
