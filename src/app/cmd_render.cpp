@@ -1,6 +1,7 @@
 // `rayvec render SCENE.json|MODEL.obj -o image.png|.exr`: the Whitted renderer's front end.
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <sstream>
 
 #include "app/command_line.h"
@@ -29,17 +30,19 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void parse_aovs(const std::string& list, const std::string& output, RenderOptions& o) {
-  if (list.empty()) return;
+RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& output) {
+  RenderSettings::Aovs aov;
+  if (list.empty()) return aov;
   std::stringstream ss(list);
   for (std::string item; std::getline(ss, item, ',');) {
-    if (item == "depth") o.aov_depth = true;
-    else if (item == "normal") o.aov_normal = true;
-    else if (item == "id") o.aov_id = true;
+    if (item == "depth") aov.depth = true;
+    else if (item == "normal") aov.normal = true;
+    else if (item == "id") aov.id = true;
     else throw InputError("--aov: unknown '" + item + "' (choose from depth, normal, id)");
   }
   if (output.size() < 4 || output.substr(output.size() - 4) != ".exr")
     throw InputError("--aov: extra channels need an .exr output (got " + output + ")");
+  return aov;
 }
 
 // Command-line values win over the scene's "render" block; 0/-1/"" mean "not given".
@@ -64,16 +67,17 @@ int run_render(RenderArgs& a) {
   // Fail before the work, not after it: an unwritable -o is found by opening (and dropping) the
   // temporary the image will later be written through.
   { AtomicFile probe(a.output); }
-  RenderOptions options;
-  parse_aovs(a.aov, a.output, options);
+  const RenderSettings::Aovs aov = parse_aovs(a.aov, a.output);
   RenderStats stats;
 
   auto t = std::chrono::steady_clock::now();
   Scene scene = load_scene(a.scene);
   apply_overrides(a, scene);
+  scene.render.aov = aov;
+  const RenderSettings& settings = scene.render;
   if (a.trace.intersector.empty())
-    a.trace.intersector = scene.render.intersector.empty() ? TraceOptions{}.intersector
-                                                           : scene.render.intersector;
+    a.trace.intersector = settings.intersector.empty() ? TraceOptions{}.intersector
+                                                       : settings.intersector;
   const TraceConfig config = resolve_trace_options(a.trace);
   const AccelKind kind = resolve_accel(a.trace);
   stats.load_seconds = seconds_since(t);
@@ -83,30 +87,29 @@ int run_render(RenderArgs& a) {
   const auto accel = make_accelerator(kind, scene.mesh, config);
   stats.build_seconds = seconds_since(t);
 
-  options.spp = scene.render.spp;
-  options.whitted = {scene.render.max_depth, scene.render.min_contribution};
-  char settings[256];
-  std::snprintf(settings, sizeof settings,
+  char settings_text[256];
+  std::snprintf(settings_text, sizeof settings_text,
                 "%dx%d spp=%d max_depth=%d min_contribution=%g accel=%s isa=%s intersector=%s",
-                scene.camera.width, scene.camera.height, options.spp, options.whitted.max_depth,
-                double(options.whitted.min_contribution), accel_name(kind), isa_name(config.isa),
+                scene.camera.width, scene.camera.height, settings.spp, settings.max_depth,
+                double(settings.min_contribution), accel_name(kind), isa_name(config.isa),
                 intersector_name(config.intersector));
   if (!a.quiet) {
     std::printf("%s\n", plan_effects(scene).describe().c_str());
     std::printf("scene: %s, %zu triangles, %zu lights; %s\n", a.scene.c_str(), scene.mesh.size(),
-                scene.lights.size(), settings);
+                scene.lights.size(), settings_text);
     std::fflush(stdout);
   }
 
   ProgressBar bar(!a.quiet);
-  if (bar.enabled()) options.progress = [&bar](double f) { bar.update(f); };
-  const Image image = render(scene, *accel, options, stats);
+  std::function<void(double)> progress;
+  if (bar.enabled()) progress = [&bar](double f) { bar.update(f); };
+  const Image image = render(scene, *accel, settings, stats, progress);
   if (bar.enabled()) bar.update(1.0);
 
   t = std::chrono::steady_clock::now();
   write_image(a.output, image,
               {{"rayvec:scene", a.scene},
-               {"rayvec:settings", settings},
+               {"rayvec:settings", settings_text},
                {"rayvec:render_seconds", std::to_string(stats.render_seconds)}});
   stats.write_seconds = seconds_since(t);
 

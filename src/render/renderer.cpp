@@ -30,11 +30,11 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::vector<std::string> channel_names(const RenderOptions& o) {
+std::vector<std::string> channel_names(const RenderSettings::Aovs& aov) {
   std::vector<std::string> names{"R", "G", "B"};
-  if (o.aov_depth) names.push_back("Z");
-  if (o.aov_normal) names.insert(names.end(), {"N.x", "N.y", "N.z"});
-  if (o.aov_id) names.insert(names.end(), {"id", "object_id"});
+  if (aov.depth) names.push_back("Z");
+  if (aov.normal) names.insert(names.end(), {"N.x", "N.y", "N.z"});
+  if (aov.id) names.insert(names.end(), {"id", "object_id"});
   return names;
 }
 
@@ -52,17 +52,17 @@ std::pair<float, float> sample_position(int x, int y, int s, int n) {
   return {(float(s) + jx) / float(n), (float(row) + jy) / float(n)};
 }
 
-Image render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
-             RenderStats& stats) {
+Image render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+             RenderStats& stats, const std::function<void(double)>& progress) {
   const Camera& cam = scene.camera;
   // Before any allocation: an absurd size or a framebuffer beyond free memory fails now, exit 2.
-  check_render_budget(scene, static_cast<int>(channel_names(options).size()), available_memory_bytes());
+  check_render_budget(scene, static_cast<int>(channel_names(settings.aov).size()), available_memory_bytes());
   const CameraRays camera(cam);
-  const Whitted whitted(scene, accel, options.whitted);
-  Image image(cam.width, cam.height, channel_names(options));
+  const Whitted whitted(scene, accel, settings);
+  Image image(cam.width, cam.height, channel_names(settings.aov));
   const int nc = image.nchannels();
   const int tiles_x = (cam.width + kTile - 1) / kTile, tiles_y = (cam.height + kTile - 1) / kTile;
-  const int tiles = tiles_x * tiles_y, spp = std::max(1, options.spp);
+  const int tiles = tiles_x * tiles_y, spp = std::max(1, settings.spp);
   std::atomic<int> done{0};
   RayCounts total;
   double primary_seconds = 0, shading_seconds = 0;
@@ -102,12 +102,12 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderOptions& 
           const Hit& h = hits[i];
           SurfacePoint sp;
           if (h.hit()) sp = surface_point(scene, batch[i], h);
-          if (options.aov_depth) *px++ = h.hit() ? h.t * dot(batch[i].dir, camera.forward()) : kInf;
-          if (options.aov_normal) {
+          if (settings.aov.depth) *px++ = h.hit() ? h.t * dot(batch[i].dir, camera.forward()) : kInf;
+          if (settings.aov.normal) {
             const Vec3f nrm = h.hit() ? sp.ns : Vec3f{};
             *px++ = nrm.x; *px++ = nrm.y; *px++ = nrm.z;
           }
-          if (options.aov_id) {
+          if (settings.aov.id) {
             *px++ = float(h.tri);
             *px++ = h.hit() ? float(scene.triangle_object[h.tri]) : -1.0f;
           }
@@ -120,7 +120,7 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderOptions& 
         px[0] = c.x; px[1] = c.y; px[2] = c.z;
       }
       const int finished = ++done;
-      if (options.progress && omp_get_thread_num() == 0) options.progress(double(finished) / tiles);
+      if (progress && omp_get_thread_num() == 0) progress(double(finished) / tiles);
     }
 #pragma omp critical(rayvec_render_stats)
     {
@@ -134,7 +134,7 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderOptions& 
   stats.primary_thread_seconds = primary_seconds;
   stats.shading_thread_seconds = shading_seconds;
   stats.threads = omp_get_max_threads();
-  if (options.progress) options.progress(1.0);
+  if (progress) progress(1.0);
   return image;
 }
 

@@ -13,21 +13,12 @@
 
 namespace rayvec {
 
-struct RenderOptions {
-  int spp = 1;  // samples per pixel: 1 = the pixel centre; more = stratified (see sample_position)
-  WhittedSettings whitted;
-  // Extra EXR channels, from each pixel's first sample: Z (camera-space depth along the view axis,
-  // +inf for background), N.x N.y N.z (world shading normal facing the camera, 0 for background),
-  // id (triangle id) and object_id (-1 for background).
-  bool aov_depth = false, aov_normal = false, aov_id = false;
-  // Called from one thread now and then with the finished fraction (0..1]; may be empty.
-  std::function<void(double)> progress;
-};
-
-// Renders the scene; fills stats.rays, stats.render_seconds and the thread-time fields.
-// The result is independent of the number of threads.
-Image render(const Scene& scene, const Accelerator& accel, const RenderOptions& options,
-             RenderStats& stats);
+// Renders the scene under `settings` (usually scene.render; spp as in sample_position, the AOVs as
+// extra channels after R, G, B); fills stats.rays, stats.render_seconds and the thread-time fields.
+// The result is independent of the number of threads. `progress`, if set, is called from one thread
+// now and then with the finished fraction (0..1].
+Image render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+             RenderStats& stats, const std::function<void(double)>& progress = {});
 
 // The position in [0,1)² of sample `s` of `n` inside pixel (x, y): the centre for n = 1, a jittered
 // k×k grid when n = k², otherwise jittered N-rooks (one sample per row and per column stratum).

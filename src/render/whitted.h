@@ -11,14 +11,10 @@
 
 namespace rayvec {
 
-struct WhittedSettings {
-  int max_depth = 8;               // a primary ray is depth 0; children exist up to this depth
-  float min_contribution = 0.01f;  // smallest weight (max RGB component) worth tracing
-};
-
 class Whitted {
  public:
-  Whitted(const Scene& scene, const Accelerator& accel, WhittedSettings settings)
+  // Reads max_depth and min_contribution of `settings`.
+  Whitted(const Scene& scene, const Accelerator& accel, const RenderSettings& settings)
       : scene_(scene), accel_(accel), settings_(settings) {}
 
   // Radiance arriving along `ray` whose nearest hit is `hit` (already traced). `weight` is the
@@ -33,7 +29,7 @@ class Whitted {
 
   const Scene& scene_;
   const Accelerator& accel_;
-  WhittedSettings settings_;
+  RenderSettings settings_;
 };
 
 }  // namespace rayvec

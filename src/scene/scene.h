@@ -11,6 +11,7 @@
 
 #include "image/image.h"
 #include "scene/material.h"
+#include "scene/render_settings.h"
 #include "geometry/triangle_mesh.h"
 #include "scene/transform.h"
 
@@ -37,13 +38,6 @@ struct Light {
   Vec3f position{0, 0, 0};
   Vec3f direction{0, -1, 0};  // normalized by the loader
   Vec3f power{1, 1, 1};       // intensity (point) or irradiance (directional)
-};
-
-struct RenderSettings {
-  int max_depth = 8;               // hard cap on reflection/refraction generations
-  float min_contribution = 0.01f;  // Hall & Greenberg (1983): skip children weighing less
-  int spp = 1;                     // samples per pixel (stratified)
-  std::string intersector;         // "" = the command line's default
 };
 
 // Values a scene file sets over an object's MTL materials (same names as MTL); unset = keep.

@@ -22,7 +22,7 @@ Vec3f plane_point(const Scene& s, int x, int y) {
   return r.org + r.dir * t;
 }
 
-Image render_scene(const Scene& s, RenderStats& stats, RenderOptions o = {}) {
+Image render_scene(const Scene& s, RenderStats& stats, RenderSettings o = {}) {
   const auto accel = make_accelerator(AccelKind::brute, s.mesh, TraceConfig{});
   return render(s, *accel, o, stats);
 }
@@ -145,8 +145,8 @@ TEST(Whitted, MirrorShowsTheBackgroundAndCountsReflectionRays) {
   render_scene(s, stats);
   EXPECT_EQ(stats.rays.reflection, 0u);
   s.materials[mat].Ks = {0.5f, 0.5f, 0.5f};
-  RenderOptions shallow;
-  shallow.whitted.max_depth = 0;
+  RenderSettings shallow;
+  shallow.max_depth = 0;
   img = render_scene(s, stats, shallow);
   EXPECT_EQ(stats.rays.reflection, 0u);
   EXPECT_EQ(img.at(32, 24, 0), 0.0f);
@@ -179,7 +179,7 @@ TEST(Whitted, IndexMatchedGlassTransmitsTheBackgroundFilteredByTf) {
 TEST(Whitted, SupersamplingIsIndependentOfThreadCount) {
   Scene s = test::lambert_plane_scene({0.5f, 0.5f, 0.5f});
   s.lights.push_back(Light{Light::Type::point, {0, 2, 0}, {}, {5, 5, 5}});
-  RenderOptions o;
+  RenderSettings o;
   o.spp = 5;
   RenderStats a, b;
   const int threads = omp_get_max_threads();
