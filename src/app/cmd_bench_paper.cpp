@@ -11,10 +11,10 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "bench/paper_bench.h"
-#include "bench/progress.h"
 #include "bench/paper_scene.h"
 #include "io/input_error.h"
 #include "io/json_string.h"
+#include "io/progress.h"
 #include "kernels/triangle_kernels.h"
 
 namespace rayvec {

@@ -13,10 +13,10 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/trace_options.h"
-#include "bench/progress.h"
 #include "bench/rays_bench.h"
 #include "io/input_error.h"
 #include "io/json_string.h"
+#include "io/progress.h"
 #include "scene/obj_loader.h"
 
 namespace rayvec {

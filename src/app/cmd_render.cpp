@@ -1,7 +1,6 @@
 // `rayvec render SCENE.json|MODEL.obj -o image.png|.exr`: the Whitted renderer's front end.
 #include <chrono>
 #include <cstdio>
-#include <functional>
 #include <sstream>
 
 #include "app/command_line.h"
@@ -10,8 +9,8 @@
 #include "image/image_io.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/progress.h"
 #include "render/effects.h"
-#include "render/progress_bar.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -101,10 +100,9 @@ int run_render(RenderArgs& a) {
   }
 
   ProgressBar bar(!a.quiet);
-  std::function<void(double)> progress;
-  if (bar.enabled()) progress = [&bar](double f) { bar.update(f); };
-  const Image image = render(scene, *accel, settings, stats, progress);
-  if (bar.enabled()) bar.update(1.0);
+  const Image image = render(scene, *accel, settings, stats, bar.progress());
+  bar.update(1.0);
+  bar.finish();
 
   t = std::chrono::steady_clock::now();
   write_image(a.output, image,

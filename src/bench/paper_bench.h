@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/progress.h"
+#include "io/progress.h"
 #include "kernels/intersector.h"
 #include "platform/isa.h"
 

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "bench/progress.h"
 #include "bench/ray_sets.h"
 #include "bench/ray_tracer.h"
+#include "io/progress.h"
 
 namespace rayvec {
 
