@@ -1,13 +1,6 @@
 #include "shaders/shading_model.h"
 
-#include <algorithm>
-
 namespace rayvec::shaders {
-namespace {
-
-float max_component(Vec3f c) { return std::max({c.x, c.y, c.z}); }
-
-}  // namespace
 
 ShadingModel shading_model(int illum) {
   switch (illum) {

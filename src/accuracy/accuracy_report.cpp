@@ -10,8 +10,10 @@
 #include <memory>
 #include <random>
 
+#include "bench/median.h"
 #include "bench/ray_sets.h"
 #include "platform/isa.h"
+#include "platform/stopwatch.h"
 
 namespace rayvec {
 
@@ -29,13 +31,7 @@ double seconds_of(const std::function<void()>& run) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   run();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-double median(std::vector<double> t) {
-  if (t.empty()) return 0;
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  return seconds_since(t0);
 }
 
 RayBatch batch_of(const std::vector<Ray>& rays) {

@@ -13,10 +13,12 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/trace_options.h"
+#include "bench/median.h"
 #include "bench/rays_bench.h"
 #include "io/input_error.h"
 #include "io/json_string.h"
 #include "io/progress.h"
+#include "platform/stopwatch.h"
 #include "scene/obj_loader.h"
 
 namespace rayvec {
@@ -139,7 +141,7 @@ int run(const Options& o) {
     bvh.reset();
     const auto t0 = std::chrono::steady_clock::now();
     bvh = std::make_unique<BvhAccelerator>(mesh, config, bvh_options);
-    build_runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    build_runs.push_back(seconds_since(t0));
   }
   for (int b = 0; o.vs_embree && b < o.builds; ++b) {
     progress("building Embree's BVH (" + std::to_string(b + 1) + " of " + std::to_string(o.builds) + ")");

@@ -12,6 +12,7 @@
 #include "io/hits_csv.h"
 #include "io/output_sink.h"
 #include "io/rays_csv.h"
+#include "platform/stopwatch.h"
 #include "scene/obj_loader.h"
 
 namespace rayvec {
@@ -45,7 +46,7 @@ int run_hits(const HitsArgs& args) {
     trace_closest(*accel, rays, hits);
     for (const Hit& h : hits) hit_count += h.hit();
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
 
   if (args.any)
     write_any_hits_csv(out, occluded);

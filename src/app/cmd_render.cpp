@@ -10,6 +10,7 @@
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/progress.h"
+#include "platform/stopwatch.h"
 #include "render/effects.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
@@ -24,10 +25,6 @@ struct RenderArgs {
   bool stats = false, quiet = false;
   TraceOptions trace;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& output) {
   RenderSettings::Aovs aov;

@@ -15,6 +15,7 @@
 #include "io/input_error.h"
 #include "io/output_sink.h"
 #include "io/visibility_csv.h"
+#include "platform/stopwatch.h"
 
 namespace rayvec {
 namespace {
@@ -58,7 +59,7 @@ int run_visibility(const VisibilityArgs& args) {
   const auto accel = make_accelerator(kind, scene.mesh, config);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Visibility> result = compute_visibility(*accel, scene.mesh, verts, origin);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
 
   std::string text;
   text.reserve(result.size() * 2);

@@ -11,6 +11,7 @@
 #include "accel/accelerator.h"
 #include "bench/cpu_clock.h"
 #include "bench/fma_rate.h"
+#include "bench/median.h"
 #include "bench/paper_scene.h"
 #include "bench/paper_baselines.h"
 
@@ -47,11 +48,6 @@ double now(bool thread_cpu) {
   if (!thread_cpu)
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   return thread_cpu_seconds();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
 }
 
 // Runs `fn` at least `min_runs` times and until `min_seconds` have passed in total (at most 15 runs,

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <ctime>
 
+#include "bench/median.h"
+
 namespace rayvec {
 namespace {
 
@@ -70,12 +72,6 @@ SetResult summarize(const RaySet& set, const std::vector<Hit>& hits, double seco
 }
 
 }  // namespace
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 bool bench_uses_thread_cpu_time() { return omp_get_max_threads() == 1; }
 

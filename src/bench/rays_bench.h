@@ -13,9 +13,6 @@
 
 namespace rayvec {
 
-// The median of v (the upper one for an even count; 0 for none): how every timing here is reduced.
-double median(std::vector<double> v);
-
 // True when ray sets are timed on the thread's CPU-time clock (omp_get_max_threads() == 1).
 bool bench_uses_thread_cpu_time();
 

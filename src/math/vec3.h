@@ -1,6 +1,7 @@
 // Vec3: the small 3-vector used across rayvec (positions, directions, colours).
 // Plain aggregate, no SIMD: the kernels use the lane types of src/simd/ instead.
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 namespace rayvec {
@@ -43,6 +44,8 @@ template <typename T> constexpr Vec3<T> min(Vec3<T> a, Vec3<T> b) {
 template <typename T> constexpr Vec3<T> max(Vec3<T> a, Vec3<T> b) {
   return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z};
 }
+// The largest of x, y, z (a colour's weight in the integrator).
+template <typename T> constexpr T max_component(Vec3<T> a) { return std::max({a.x, a.y, a.z}); }
 template <typename T> bool is_finite(Vec3<T> a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }

@@ -8,8 +8,6 @@
 namespace rayvec {
 namespace {
 
-float max_component(Vec3f c) { return std::max({c.x, c.y, c.z}); }
-
 std::string count(int n, const char* what) {
   return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }

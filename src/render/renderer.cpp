@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "platform/stopwatch.h"
 #include "render/camera_rays.h"
 #include "render/render_budget.h"
 
@@ -25,10 +26,6 @@ uint32_t hash32(uint32_t x) {
 }
 
 float unit_float(uint32_t h) { return float(h >> 8) * (1.0f / 16777216.0f); }
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 std::vector<std::string> channel_names(const RenderSettings::Aovs& aov) {
   std::vector<std::string> names{"R", "G", "B"};

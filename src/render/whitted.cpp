@@ -14,8 +14,6 @@
 namespace rayvec {
 namespace {
 
-float max_component(Vec3f c) { return std::max({c.x, c.y, c.z}); }
-
 // Just short of the light: an occluder exactly at the light's position does not shadow.
 constexpr float kBeforeLight = 0.99999f;
 
