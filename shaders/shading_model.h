@@ -15,12 +15,12 @@ namespace rayvec::shaders {
 //   blinn_phong     illum 2      diffuse + the Blinn–Phong highlight (Ks, Ns)
 //   mirror          illum 3, 4   blinn_phong + a mirror ray weighted by Ks
 //   fresnel_mirror  illum 5      blinn_phong + a mirror ray weighted by Ks·F (F: Fresnel reflectance)
-//   glass           illum 6      blinn_phong's local term times the dissolve d, + a mirror ray (Ks)
-//                                and a refraction ray (Tf; Snell with Ni)
+//   glass           illum 6      blinn_phong with its lit part (not Ke) times the dissolve d, + a
+//                                mirror ray (Ks) and a refraction ray (Tf; Snell with Ni)
 //   fresnel_glass   illum 7      as glass, the mirror ray weighted by Ks·F, the refraction ray by
 //                                Tf·(1 − F)
 // A material spawns a ray only where its weight (Ks, Tf) is non-zero; a glass without a refraction
-// ray keeps its local term undissolved. illum 4 (MTL: glass without refraction) is traced as a
+// ray (Tf = 0) is not dissolved. illum 4 (MTL: glass without refraction) is traced as a
 // mirror. illum 8 and 9 (MTL: reflection map, no ray tracing) and 10 (shadow matte) are drawn with
 // the Blinn–Phong model, as are values above 10; values below 0 are drawn as diffuse. Only an MTL
 // file can give a value outside 0..10: scene JSON rejects it.
