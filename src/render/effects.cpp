@@ -1,6 +1,5 @@
 #include "render/effects.h"
 
-#include <algorithm>
 #include <vector>
 
 #include "shaders/shading_model.h"

@@ -1,6 +1,5 @@
 #include "render/whitted.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include "render/offset_ray.h"
