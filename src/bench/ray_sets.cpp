@@ -27,21 +27,15 @@ Vec3d hit_point(const Ray& r, const Hit& h) {
 }  // namespace
 
 BenchCamera frame_mesh(const TriangleMesh& mesh, int width, int height) {
-  BenchCamera c;
-  Vec3d lo{0, 0, 0}, hi{0, 0, 0};
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-    const Vec3d p(mesh.positions[i]);
-    lo = i == 0 ? p : min(lo, p);
-    hi = i == 0 ? p : max(hi, p);
-  }
+  BBox box;
+  for (const Vec3f& p : mesh.positions) box.grow(p);
   const double half_fov = 22.5 * std::numbers::pi / 180.0;
-  c.center = (lo + hi) * 0.5;
-  c.radius = length(hi - lo) / 2;
-  const Vec3d d = normalize(Vec3d{0.5, 0.5, 1.0});
-  c.eye = c.center + d * (1.05 * c.radius / std::sin(half_fov));
-  c.fwd = normalize(c.center - c.eye);
-  c.right = normalize(cross(c.fwd, Vec3d{0, 1, 0}));
-  c.up = cross(c.right, c.fwd);
+  const BoxFraming<double> framing = frame_box(box, Vec3d{0.5, 0.5, 1.0}, half_fov, 1.05);
+  BenchCamera c;
+  c.center = framing.center;
+  c.eye = framing.eye;
+  c.radius = framing.radius;
+  c.frame = look_at_frame(c.eye, c.center, Vec3d{0, 1, 0});
   c.th = std::tan(half_fov);
   c.width = width;
   c.height = height;
@@ -51,7 +45,7 @@ BenchCamera frame_mesh(const TriangleMesh& mesh, int width, int height) {
 Ray primary_ray(const BenchCamera& c, int x, int y) {
   const double u = (2.0 * (x + 0.5) / c.width - 1.0) * c.th * c.width / c.height;
   const double v = (1.0 - 2.0 * (y + 0.5) / c.height) * c.th;
-  return Ray{to_float(c.eye), to_float(normalize(c.fwd + c.right * u + c.up * v)), 0.0f, kInf};
+  return Ray{to_float(c.eye), to_float(c.frame.direction(u, v)), 0.0f, kInf};
 }
 
 RaySet primary_rays(const BenchCamera& c) {

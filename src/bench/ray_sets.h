@@ -7,18 +7,22 @@
 #include <vector>
 
 #include "math/vec3.h"
+#include "rays/pinhole_camera.h"
 #include "rays/ray.h"
 
 namespace rayvec {
 
 struct TriangleMesh;
 
-// The framing camera, in double (rays are rounded to float at the end):
-// lo, hi = bounding box of all vertices; C = (lo + hi)/2; R = |hi − lo|/2; D = normalize(0.5, 0.5, 1);
-// eye = C + D · 1.05 · R / sin(22.5°); fwd = normalize(C − eye); right = normalize(cross(fwd, (0,1,0)));
-// up = cross(right, fwd); th = tan(22.5°).
+// The framing camera, in double (rays are rounded to float at the end), i.e. frame_box and
+// look_at_frame of rays/pinhole_camera.h with these arguments:
+// lo, hi = bounding box of all vertices; C = (lo + hi)/2; R = max(|hi − lo|/2, 1e-30);
+// D = normalize(0.5, 0.5, 1); eye = C + D · 1.05 · R / sin(22.5°); fwd = normalize(C − eye);
+// right = normalize(cross(fwd, (0,1,0))); up = cross(right, fwd); th = tan(22.5°). The 45° field is
+// vertical whatever the aspect: a portrait W < H image may crop the mesh at its sides.
 struct BenchCamera {
-  Vec3d center, eye, fwd, right, up;
+  Vec3d center, eye;
+  PinholeFrame<double> frame;  // fwd, right, up
   double radius = 0, th = 0;
   int width = 0, height = 0;
 };

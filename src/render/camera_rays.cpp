@@ -5,11 +5,7 @@
 
 namespace rayvec {
 
-CameraRays::CameraRays(const Camera& c)
-    : eye_(c.eye),
-      forward_(normalize(c.look_at - c.eye)),
-      right_(normalize(cross(forward_, c.up))),
-      up_(cross(right_, forward_)) {
+CameraRays::CameraRays(const Camera& c) : eye_(c.eye), frame_(look_at_frame(c.eye, c.look_at, c.up)) {
   const float tan_half = std::tan(0.5f * c.fov_y * std::numbers::pi_v<float> / 180.0f);
   half_w_ = 0.5f * float(c.width);
   half_h_ = 0.5f * float(c.height);
@@ -20,7 +16,7 @@ CameraRays::CameraRays(const Camera& c)
 Ray CameraRays::ray(float px, float py) const {
   const float x = (px - half_w_) * scale_x_;
   const float y = (half_h_ - py) * scale_y_;
-  return Ray{eye_, normalize(forward_ + right_ * x + up_ * y), 0.0f, kInf};
+  return Ray{eye_, frame_.direction(x, y), 0.0f, kInf};
 }
 
 }  // namespace rayvec

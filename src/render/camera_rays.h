@@ -1,6 +1,8 @@
-// CameraRays: the pinhole camera's primary rays. Image right = cross(forward, up); image up is
-// perpendicular to both; row 0 is the top row; fov_y spans the image height.
+// CameraRays: the pinhole camera's primary rays, through the look-at frame of rays/pinhole_camera.h
+// (image right = cross(forward, up); image up is perpendicular to both); row 0 is the top row; fov_y
+// spans the image height.
 #pragma once
+#include "rays/pinhole_camera.h"
 #include "rays/ray.h"
 #include "scene/scene.h"
 
@@ -12,10 +14,11 @@ class CameraRays {
   // The ray through continuous image position (px, py): px in [0, width) left to right,
   // py in [0, height) top to bottom; pixel (x, y)'s centre is (x + 0.5, y + 0.5). Unit direction.
   Ray ray(float px, float py) const;
-  Vec3f forward() const { return forward_; }
+  Vec3f forward() const { return frame_.forward; }
 
  private:
-  Vec3f eye_, forward_, right_, up_;
+  Vec3f eye_;
+  PinholeFrame<float> frame_;
   float scale_x_, scale_y_;  // tan(fov_y/2)·aspect and tan(fov_y/2), over half the image size
   float half_w_, half_h_;
 };
