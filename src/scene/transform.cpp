@@ -1,62 +1,55 @@
+// GLM's one includer: the rotations, the scale matrices and their products, all in double. The
+// rotations are gtx/euler_angles' (cos and sin placed in the matrix); glm::rotate would normalize the
+// axis and form the diagonal 1 as c + (1 − c), which can round.
 #include "scene/transform.h"
 
-#include <cmath>
+#include <algorithm>
 #include <numbers>
+
+#define GLM_ENABLE_EXPERIMENTAL  // GLM asks for it before any gtx/ extension
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/gtx/euler_angles.hpp>
+#include <glm/gtx/matrix_operation.hpp>
 
 namespace rayvec {
 namespace {
 
-using Mat3 = std::array<std::array<double, 3>, 3>;
+glm::dvec3 to_glm(Vec3d v) { return {v.x, v.y, v.z}; }
+Vec3d from_glm(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
-Mat3 multiply(const Mat3& a, const Mat3& b) {
-  Mat3 r{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
-  return r;
+glm::dmat3 load(const std::array<double, 9>& m) { return glm::make_mat3(m.data()); }
+void store(const glm::dmat3& m, std::array<double, 9>& out) {
+  const double* p = glm::value_ptr(m);
+  std::copy(p, p + 9, out.begin());
 }
 
-Mat3 rotation(int axis, double degrees) {
-  const double a = degrees * std::numbers::pi / 180.0, c = std::cos(a), s = std::sin(a);
-  const int i = (axis + 1) % 3, j = (axis + 2) % 3;  // the plane rotated: y-z, z-x or x-y
-  Mat3 r{};
-  r[axis][axis] = 1;
-  r[i][i] = c; r[i][j] = -s;
-  r[j][i] = s; r[j][j] = c;
-  return r;
-}
-
-Mat3 diagonal(double x, double y, double z) {
-  Mat3 r{};
-  r[0][0] = x; r[1][1] = y; r[2][2] = z;
-  return r;
-}
-
-Vec3d apply(const Mat3& m, Vec3d v) {
-  return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
-          m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-          m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-}
+double radians(float degrees) { return double(degrees) * std::numbers::pi / 180.0; }
 
 }  // namespace
 
 AffineMap::AffineMap(const Transform& t) : translate_(Vec3d(t.translate)) {
-  const Mat3 r = multiply(rotation(2, t.rotate_deg.z),
-                          multiply(rotation(1, t.rotate_deg.y), rotation(0, t.rotate_deg.x)));
-  linear_ = multiply(r, diagonal(t.scale.x, t.scale.y, t.scale.z));
-  // (R·S)⁻ᵀ = R·S⁻¹ because R is orthonormal; scales are checked non-zero by the loader.
-  normal_ = multiply(r, diagonal(1.0 / t.scale.x, 1.0 / t.scale.y, 1.0 / t.scale.z));
+  // Right-handed rotations about x, y and z (the upper 3×3 of GLM's 4×4 matrices), x applied first.
+  const glm::dmat3 rx(glm::eulerAngleX(radians(t.rotate_deg.x)));
+  const glm::dmat3 ry(glm::eulerAngleY(radians(t.rotate_deg.y)));
+  const glm::dmat3 rz(glm::eulerAngleZ(radians(t.rotate_deg.z)));
+  const glm::dmat3 r = rz * (ry * rx);
+  const glm::dvec3 s(t.scale.x, t.scale.y, t.scale.z);
+  store(r * glm::diagonal3x3(s), linear_);
+  // (R·S)⁻ᵀ = R·S⁻¹ because R is orthonormal; scales are checked non-zero by the loader. Formed so
+  // rather than by glm::inverseTranspose, which would round through cofactors and a determinant.
+  store(r * glm::diagonal3x3(1.0 / s), normal_);
   flips_ = ((t.scale.x < 0) != (t.scale.y < 0)) != (t.scale.z < 0);  // odd number of mirrors
 }
 
 Vec3f AffineMap::point(Vec3f p) const {
-  return Vec3f(apply(linear_, Vec3d(p)) + translate_);
+  return Vec3f(from_glm(load(linear_) * to_glm(Vec3d(p)) + to_glm(translate_)));
 }
 
 Vec3f AffineMap::normal(Vec3f n) const {
-  const Vec3d m = apply(normal_, Vec3d(n));
-  const double len = length(m);
-  return len > 0 ? Vec3f(m * (1.0 / len)) : n;
+  const glm::dvec3 m = load(normal_) * to_glm(Vec3d(n));
+  const double len = glm::length(m);
+  return len > 0 ? Vec3f(from_glm(m * (1.0 / len))) : n;
 }
 
 }  // namespace rayvec

@@ -26,7 +26,8 @@ class AffineMap {
   bool flips_orientation() const { return flips_; }
 
  private:
-  std::array<std::array<double, 3>, 3> linear_{}, normal_{};
+  // Column-major 3×3 matrices, glm::dmat3's layout (transform.cpp is GLM's one includer).
+  std::array<double, 9> linear_{}, normal_{};
   Vec3d translate_;
   bool flips_ = false;
 };
