@@ -19,6 +19,7 @@ struct vfloat {
   using Scalar = float;
   __m256 v;
   static RAYVEC_INLINE vfloat load(const float* p) { return {_mm256_loadu_ps(p)}; }
+  static RAYVEC_INLINE vfloat load_aligned(const float* p) { return {_mm256_load_ps(p)}; }  // 32 bytes
   static RAYVEC_INLINE vfloat broadcast(float x) { return {_mm256_set1_ps(x)}; }
   static RAYVEC_INLINE vfloat index_bits(uint32_t base) {
     const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
@@ -55,6 +56,7 @@ RAYVEC_INLINE vfloat operator*(vfloat a, vfloat b) { return {_mm256_mul_ps(a.v, 
 RAYVEC_INLINE vfloat operator/(vfloat a, vfloat b) { return {_mm256_div_ps(a.v, b.v)}; }
 RAYVEC_INLINE vfloat fmadd(vfloat a, vfloat b, vfloat c) { return {_mm256_fmadd_ps(a.v, b.v, c.v)}; }
 RAYVEC_INLINE vfloat fmsub(vfloat a, vfloat b, vfloat c) { return {_mm256_fmsub_ps(a.v, b.v, c.v)}; }
+RAYVEC_INLINE vfloat fnmadd(vfloat a, vfloat b, vfloat c) { return {_mm256_fnmadd_ps(a.v, b.v, c.v)}; }
 RAYVEC_INLINE vfloat abs(vfloat a) { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)}; }
 RAYVEC_INLINE vfloat sign_bit(vfloat a) { return {_mm256_and_ps(_mm256_set1_ps(-0.0f), a.v)}; }
 RAYVEC_INLINE vfloat xor_bits(vfloat a, vfloat b) { return {_mm256_xor_ps(a.v, b.v)}; }
@@ -123,6 +125,19 @@ RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) {
 // to skip NaN slabs and infinite widenings in box tests).
 RAYVEC_INLINE vfloat vmin(vfloat a, vfloat b) { return {_mm256_min_ps(a.v, b.v)}; }
 RAYVEC_INLINE vfloat vmax(vfloat a, vfloat b) { return {_mm256_max_ps(a.v, b.v)}; }
+
+// The lanes whose sign bit is set (negative, −0, or a NaN with its sign set). A mask of sign bits
+// only: select and bits read nothing else.
+RAYVEC_INLINE vmaskf sign_mask(vfloat a) { return {a.v}; }
+
+// The smallest and the largest of v over `lanes` (bit k: lane k; nonzero).
+RAYVEC_INLINE float hmin_lanes(vfloat v, unsigned lanes) {
+  return hmin(select(mask_from_bits(v, lanes), vfloat::broadcast(__builtin_inff()), v));
+}
+RAYVEC_INLINE float hmax_lanes(vfloat v, unsigned lanes) {
+  const vfloat neg = xor_bits(v, vfloat::broadcast(-0.0f));
+  return -hmin(select(mask_from_bits(v, lanes), vfloat::broadcast(__builtin_inff()), neg));
+}
 
 // Bitwise or of three vectors, and the lanes whose sign bit is clear (+0, positive, +inf, or a NaN
 // with a clear sign): the float `mt` pre-test ORs its values and tests the sign once

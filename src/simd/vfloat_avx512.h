@@ -20,6 +20,7 @@ struct vfloat {
   using Scalar = float;
   __m512 v;
   static RAYVEC_INLINE vfloat load(const float* p) { return {_mm512_loadu_ps(p)}; }
+  static RAYVEC_INLINE vfloat load_aligned(const float* p) { return {_mm512_load_ps(p)}; }  // 64 bytes
   static RAYVEC_INLINE vfloat broadcast(float x) { return {_mm512_set1_ps(x)}; }
   // Lane k holds the integer base + k as raw bits (blended bitwise, never used arithmetically).
   static RAYVEC_INLINE vfloat index_bits(uint32_t base) {
@@ -59,6 +60,7 @@ RAYVEC_INLINE vfloat operator*(vfloat a, vfloat b) { return {_mm512_mul_ps(a.v, 
 RAYVEC_INLINE vfloat operator/(vfloat a, vfloat b) { return {_mm512_div_ps(a.v, b.v)}; }
 RAYVEC_INLINE vfloat fmadd(vfloat a, vfloat b, vfloat c) { return {_mm512_fmadd_ps(a.v, b.v, c.v)}; }
 RAYVEC_INLINE vfloat fmsub(vfloat a, vfloat b, vfloat c) { return {_mm512_fmsub_ps(a.v, b.v, c.v)}; }
+RAYVEC_INLINE vfloat fnmadd(vfloat a, vfloat b, vfloat c) { return {_mm512_fnmadd_ps(a.v, b.v, c.v)}; }
 RAYVEC_INLINE vfloat abs(vfloat a) {
   return {_mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a.v), _mm512_set1_epi32(INT32_MAX)))};
 }
@@ -140,6 +142,17 @@ RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) {
 RAYVEC_INLINE vfloat vmin(vfloat a, vfloat b) { return {_mm512_maskz_min_ps(__mmask16(0xffff), a.v, b.v)}; }
 RAYVEC_INLINE vfloat vmax(vfloat a, vfloat b) { return {_mm512_maskz_max_ps(__mmask16(0xffff), a.v, b.v)}; }
 
+// The lanes whose sign bit is set (negative, −0, or a NaN with its sign set).
+RAYVEC_INLINE vmaskf sign_mask(vfloat a) { return {_mm512_movepi32_mask(_mm512_castps_si512(a.v))}; }
+
+// The smallest and the largest of v over `lanes` (bit k: lane k; nonzero).
+RAYVEC_INLINE float hmin_lanes(vfloat v, unsigned lanes) {
+  return _mm512_mask_reduce_min_ps(__mmask16(lanes), v.v);
+}
+RAYVEC_INLINE float hmax_lanes(vfloat v, unsigned lanes) {
+  return _mm512_mask_reduce_max_ps(__mmask16(lanes), v.v);
+}
+
 // Bitwise or of three vectors, and the lanes whose sign bit is clear (+0, positive, +inf, or a NaN
 // with a clear sign): the float `mt` pre-test ORs its values and tests the sign once
 // (moller_trumbore.inl, mt_sign_pretest).
@@ -150,5 +163,33 @@ RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) {
 RAYVEC_INLINE vmaskf sign_clear(vfloat a) {
   return {_mm512_testn_epi32_mask(_mm512_castps_si512(a.v), _mm512_set1_epi32(INT32_MIN))};
 }
+
+// vfloat8: 8 floats in a ymm register with AVX-512VL mask compares — the lane type of 8-wide BVH
+// nodes (bvh/simd/box_lanes.inl), where a zmm would test 8 children that do not exist. Only what the
+// box test needs.
+struct vmask8 { __mmask8 m; };
+
+struct vfloat8 {
+  static constexpr int W = 8;
+  using Mask = vmask8;
+  using Scalar = float;
+  __m256 v;
+  static RAYVEC_INLINE vfloat8 load(const float* p) { return {_mm256_loadu_ps(p)}; }
+  static RAYVEC_INLINE vfloat8 load_aligned(const float* p) { return {_mm256_load_ps(p)}; }  // 32 bytes
+  static RAYVEC_INLINE vfloat8 broadcast(float x) { return {_mm256_set1_ps(x)}; }
+  RAYVEC_INLINE void store(float* out) const { _mm256_storeu_ps(out, v); }
+};
+
+RAYVEC_INLINE vfloat8 operator-(vfloat8 a, vfloat8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
+RAYVEC_INLINE vfloat8 operator*(vfloat8 a, vfloat8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
+RAYVEC_INLINE vfloat8 fmadd(vfloat8 a, vfloat8 b, vfloat8 c) { return {_mm256_fmadd_ps(a.v, b.v, c.v)}; }
+RAYVEC_INLINE vfloat8 fmsub(vfloat8 a, vfloat8 b, vfloat8 c) { return {_mm256_fmsub_ps(a.v, b.v, c.v)}; }
+RAYVEC_INLINE vfloat8 fnmadd(vfloat8 a, vfloat8 b, vfloat8 c) { return {_mm256_fnmadd_ps(a.v, b.v, c.v)}; }
+RAYVEC_INLINE vfloat8 abs(vfloat8 a) { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)}; }
+// NaN rule as vfloat's: where either lane is NaN the result is b's lane.
+RAYVEC_INLINE vfloat8 vmin(vfloat8 a, vfloat8 b) { return {_mm256_min_ps(a.v, b.v)}; }
+RAYVEC_INLINE vfloat8 vmax(vfloat8 a, vfloat8 b) { return {_mm256_max_ps(a.v, b.v)}; }
+RAYVEC_INLINE vmask8 operator<=(vfloat8 a, vfloat8 b) { return {_mm256_cmp_ps_mask(a.v, b.v, _CMP_LE_OQ)}; }
+RAYVEC_INLINE unsigned bits(vmask8 a) { return a.m; }
 
 }  // namespace rayvec::avx512

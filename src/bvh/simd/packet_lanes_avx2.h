@@ -1,7 +1,6 @@
 // AVX2 packet lanes for bvh/packet_traversal.inl: 8 rays, one per ymm lane. The box tests are
-// packet_lanes.inl's over the Ymm lane type (PacketLanes8: any tmin; its Forward: tmin >= 0, one
-// FMA a slab); this file adds the packet's setup (the AoS → SoA transpose of its rays) and a
-// lane reduction. One of the only files that include <immintrin.h>;
+// packet_lanes.inl's over vfloat (PacketLanes8: any tmin; its Forward: tmin >= 0, one FMA a slab);
+// this file adds the packet's setup (the AoS → SoA transpose of its rays) and a lane reduction. One of the only files that include <immintrin.h>;
 // included only by *_avx2.cpp units after box_lanes_avx2.h, in namespace rayvec::avx2.
 #pragma once
 #include <immintrin.h>
@@ -14,9 +13,9 @@ namespace rayvec::avx2 {
 
 #include "bvh/simd/packet_lanes.inl"
 
-struct PacketLanes8 : PacketLanesBase<Ymm, PacketLanes8> {
+struct PacketLanes8 : PacketLanesBase<vfloat, PacketLanes8> {
   template <bool Uniform>
-  using Forward = PacketForward<Ymm, Uniform>;
+  using Forward = PacketForward<vfloat, Uniform>;
 
   // Transposes 8 rays of 8 floats each (the Ray layout: o, d, tmin, tmax; ray k at rays + 8k) into
   // rows[f][k], reading only the rays of `lanes` (the others' rows are 0). Returns the lanes of
@@ -51,8 +50,7 @@ struct PacketLanes8 : PacketLanesBase<Ymm, PacketLanes8> {
   }
   // The smallest of tn over `lanes` (nonzero).
   static RAYVEC_INLINE float min_lanes(const float* tn, unsigned lanes) {
-    return Ymm::hmin(_mm256_blendv_ps(_mm256_set1_ps(__builtin_inff()), _mm256_loadu_ps(tn),
-                                      Ymm::signs_from_bits(lanes)));
+    return hmin_lanes(vfloat::load(tn), lanes);
   }
 };
 

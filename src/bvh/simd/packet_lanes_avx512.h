@@ -1,7 +1,7 @@
 // AVX-512 packet lanes for bvh/packet_traversal.inl: 16 rays, one per zmm lane. The box tests are
-// packet_lanes.inl's over the Zmm lane type (PacketLanes16: any tmin; its Forward: tmin >= 0, one
-// FMA a slab); this file adds the packet's setup (the AoS → SoA transpose of its rays) and a
-// lane reduction. One of the only files that include <immintrin.h>;
+// packet_lanes.inl's over vfloat (PacketLanes16: any tmin; its Forward: tmin >= 0, one FMA a
+// slab); this file adds the packet's setup (the AoS → SoA transpose of its rays) and a lane
+// reduction. One of the only files that include <immintrin.h>;
 // included only by *_avx512.cpp units after box_lanes_avx512.h, in namespace rayvec::avx512.
 #pragma once
 #include <immintrin.h>
@@ -14,9 +14,9 @@ namespace rayvec::avx512 {
 
 #include "bvh/simd/packet_lanes.inl"
 
-struct PacketLanes16 : PacketLanesBase<Zmm, PacketLanes16> {
+struct PacketLanes16 : PacketLanesBase<vfloat, PacketLanes16> {
   template <bool Uniform>
-  using Forward = PacketForward<Zmm, Uniform>;
+  using Forward = PacketForward<vfloat, Uniform>;
 
   // Transposes 16 rays of 8 floats each (the Ray layout: o, d, tmin, tmax; ray k at rays + 8k) into
   // rows[f][k], reading only the rays of `lanes` (the others' rows are 0). Returns the lanes of
@@ -63,7 +63,7 @@ struct PacketLanes16 : PacketLanesBase<Zmm, PacketLanes16> {
   }
   // The smallest of tn over `lanes` (nonzero).
   static RAYVEC_INLINE float min_lanes(const float* tn, unsigned lanes) {
-    return _mm512_mask_reduce_min_ps(__mmask16(lanes), _mm512_loadu_ps(tn));
+    return hmin_lanes(vfloat::load(tn), lanes);
   }
 };
 
