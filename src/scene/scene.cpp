@@ -114,8 +114,8 @@ void frame_bounding_box(Scene& scene) {
   // The bounding sphere fits the narrower field of view, with a 10% margin, seen from slightly
   // above along +z.
   const float aspect = float(cam.width) / float(cam.height);
-  const BoxFraming<float> framing = frame_box(BBox{lo, hi}, Vec3f{0.0f, 0.35f, 1.0f},
-                                              narrower_half_fov(half_fov, aspect), 1.1f);
+  const BoxFraming<float> framing =
+      frame_box(BBox{lo, hi}, Vec3f{0.0f, 0.35f, 1.0f}, narrower_half_fov(half_fov, aspect), 1.1f);
   cam.look_at = framing.center;
   cam.eye = framing.eye;
   cam.up = {0, 1, 0};

@@ -34,8 +34,10 @@ TEST(AffineMap, NormalStaysPerpendicularToTransformedTangents) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-1, 1), s(0.2f, 3), deg(-180, 180);
   for (int i = 0; i < 200; ++i) {
-    const Transform t{{s(rng) * (i % 2 ? -1.0f : 1.0f), s(rng), s(rng)}, {deg(rng), deg(rng), deg(rng)},
-                      {u(rng), u(rng), u(rng)}};
+    Transform t;
+    t.scale = {s(rng) * (i % 2 ? -1.0f : 1.0f), s(rng), s(rng)};
+    t.rotate_deg = {deg(rng), deg(rng), deg(rng)};
+    t.translate = {u(rng), u(rng), u(rng)};
     const AffineMap m(t);
     const Vec3f a{u(rng), u(rng), u(rng)}, b{u(rng), u(rng), u(rng)}, c{u(rng), u(rng), u(rng)};
     const Vec3f n = normalize(cross(b - a, c - a));
