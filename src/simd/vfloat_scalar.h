@@ -17,6 +17,7 @@ struct vlane {
   using Scalar = T;
   T v;
   static RAYVEC_INLINE vlane load(const float* p) { return {T(*p)}; }
+  static RAYVEC_INLINE vlane load_aligned(const float* p) { return {T(*p)}; }
   static RAYVEC_INLINE vlane broadcast(T x) { return {x}; }
   static RAYVEC_INLINE vlane index_bits(uint32_t base) { return {std::bit_cast<T>(Bits(base))}; }
   RAYVEC_INLINE void store(T* out) const { *out = v; }
@@ -32,7 +33,9 @@ template <typename T, typename B> RAYVEC_INLINE vlane<T, B> operator/(vlane<T, B
 // No FMA in baseline x86-64: a multiply and an add, each rounded.
 template <typename T, typename B> RAYVEC_INLINE vlane<T, B> fmadd(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) { return {a.v * b.v + c.v}; }
 template <typename T, typename B> RAYVEC_INLINE vlane<T, B> fmsub(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) { return {a.v * b.v - c.v}; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> abs(vlane<T, B> a) { return {a.v < T(0) ? -a.v : (a.v == T(0) ? T(0) : a.v)}; }
+template <typename T, typename B> RAYVEC_INLINE vlane<T, B> fnmadd(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) { return {c.v - a.v * b.v}; }
+// |a| by clearing the sign bit, as the vector ISAs do (andnot): −0 gives +0, a NaN stays a NaN.
+template <typename T, typename B> RAYVEC_INLINE vlane<T, B> abs(vlane<T, B> a) { const B mag = ~(B(1) << (sizeof(B) * 8 - 1)); return {std::bit_cast<T>(B(std::bit_cast<B>(a.v) & mag))}; }
 template <typename T, typename B> RAYVEC_INLINE vlane<T, B> sign_bit(vlane<T, B> a) {
   const B sign = B(1) << (sizeof(B) * 8 - 1);
   return {std::bit_cast<T>(B(std::bit_cast<B>(a.v) & sign))};
@@ -51,6 +54,10 @@ RAYVEC_INLINE unsigned bits(vmask a) { return a.m ? 1u : 0u; }
 template <typename T, typename B> RAYVEC_INLINE vmask first_lanes(vlane<T, B>, uint32_t n) { return {n > 0}; }
 template <typename T, typename B> RAYVEC_INLINE vmask lanes_between(vlane<T, B>, uint32_t lo, uint32_t hi) { return {lo == 0 && hi > 0}; }
 template <typename T, typename B> RAYVEC_INLINE vlane<T, B> select(vmask m, vlane<T, B> a, vlane<T, B> b) { return m.m ? b : a; }
+
+// Min and max by the x86 rule of the vector ISAs: where either is NaN the result is b.
+template <typename T, typename B> RAYVEC_INLINE vlane<T, B> vmin(vlane<T, B> a, vlane<T, B> b) { return a.v < b.v ? a : b; }
+template <typename T, typename B> RAYVEC_INLINE vlane<T, B> vmax(vlane<T, B> a, vlane<T, B> b) { return a.v > b.v ? a : b; }
 
 // The smallest lane: the only one.
 template <typename T, typename B> RAYVEC_INLINE T hmin(vlane<T, B> a) { return a.v; }
