@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(build-essential cmake pkg-config
           libtinyobjloader-dev libopenimageio-dev openimageio-tools libopenexr-dev
           libglm-dev nlohmann-json3-dev libcli11-dev
-          libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev)
+          libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev clang-format)
 for flag in "$@"; do
   case "$flag" in
     --with-embree) packages+=(libembree-dev) ;;

@@ -12,7 +12,8 @@ Vec3f blinn_phong(Vec3f ks, float ns, Vec3f n, Vec3f to_light, Vec3f to_eye, Vec
   if (!(len > 0)) return {};
   const float cos_h = dot(n, h) / len;
   if (!(cos_h > 0)) return {};
-  const float lobe = (ns + 8.0f) / (8.0f * std::numbers::pi_v<float>) * std::pow(cos_h, ns);
+  const float norm = (ns + 8.0f) / (8.0f * std::numbers::pi_v<float>);  // energy normalisation
+  const float lobe = norm * std::pow(cos_h, ns);
   return ks * irradiance * lobe;
 }
 

@@ -23,8 +23,8 @@ void write_file(const std::string& path, const std::string& text) {
 }
 
 std::string temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("rayvec_test_" + std::to_string(::getpid()) + "_" + name);
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("rayvec_test_" + std::to_string(::getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
@@ -34,8 +34,8 @@ CommandResult run_cli(const std::string& args, const std::string& stdin_text) {
   const std::string dir = temp_dir("cli");
   const std::string in = dir + "/stdin", out = dir + "/stdout", err = dir + "/stderr";
   write_file(in, stdin_text);
-  const std::string cmd = std::string("'") + RAYVEC_CLI + "' " + args + " <'" + in + "' >'" + out +
-                          "' 2>'" + err + "'";
+  const std::string cmd =
+      std::string("'") + RAYVEC_CLI + "' " + args + " <'" + in + "' >'" + out + "' 2>'" + err + "'";
   const int raw = std::system(cmd.c_str());
   CommandResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);

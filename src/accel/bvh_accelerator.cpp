@@ -13,8 +13,8 @@ namespace {
 // kernel comparison is ordered); rejecting them here keeps NaN out of the box test.
 bool traceable(const Ray& r) {
   return std::isfinite(r.org.x) && std::isfinite(r.org.y) && std::isfinite(r.org.z) &&
-         std::isfinite(r.dir.x) && std::isfinite(r.dir.y) && std::isfinite(r.dir.z) &&
-         !std::isnan(r.tmin) && !std::isnan(r.tmax);
+         std::isfinite(r.dir.x) && std::isfinite(r.dir.y) && std::isfinite(r.dir.z) && !std::isnan(r.tmin) &&
+         !std::isnan(r.tmax);
 }
 
 // Whether the closest-hit traversal calls the leaf kernel directly: only the float mt kernel has
@@ -31,8 +31,8 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
     : config_(config),
       kernels_(&triangle_kernels(config.isa, config.intersector)),
       traversal_(&bvh_traversal(config.isa,
-                              options.width ? options.width : default_bvh_width(config.isa, mesh.size()),
-                              direct_leaf(config, options))) {
+                                options.width ? options.width : default_bvh_width(config.isa, mesh.size()),
+                                direct_leaf(config, options))) {
   SahConfig sah = options.sah;
   if (options.leaves_from_kernel && kernels_->width >= 8) {
     sah.leaf_block = uint32_t(kernels_->width);

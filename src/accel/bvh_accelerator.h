@@ -18,7 +18,7 @@ struct BvhOptions {
   // kernel-width block of triangles and up to two blocks per leaf (AVX-512: 16 and 32, AVX2: 8 and
   // 16; scalar keeps sah's 4 and 8). false: use sah.max_leaf and sah.leaf_block as given.
   bool leaves_from_kernel = true;
-  int width = 0;  // children per node: 0 = default_bvh_width(isa, triangles)
+  int width = 0;                           // children per node: 0 = default_bvh_width(isa, triangles)
   float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
   // The closest-hit traversal calls the float `mt` leaf kernel directly (1) or through the kernel
   // table (0); −1 = default_direct_leaf(isa, this CPU's vendor). Other intersectors always use

@@ -12,9 +12,9 @@
 namespace rayvec {
 
 struct AccuracySettings {
-  int scale = 2;             // hard-case ray counts ×scale (hard_case_families)
-  int bvh_size = 512;        // primary rays: bvh_size² pixels
-  int repeats = 3;           // timings: median of this many runs (after a warm-up)
+  int scale = 2;       // hard-case ray counts ×scale (hard_case_families)
+  int bvh_size = 512;  // primary rays: bvh_size² pixels
+  int repeats = 3;     // timings: median of this many runs (after a warm-up)
   uint64_t seed = 2026;
 };
 
@@ -27,7 +27,7 @@ struct ModeResult {
   // ratios of the same repeat share the machine's load (paired ratios).
   std::vector<double> brute_seconds, bvh_seconds;
   std::vector<double> bvh_nonfinite_seconds;  // the same primary rays with a NaN/Inf field each
-  std::vector<FamilyScore> families;  // same order as AccuracyReport::families
+  std::vector<FamilyScore> families;          // same order as AccuracyReport::families
 };
 
 struct AccuracyReport {
@@ -35,10 +35,10 @@ struct AccuracyReport {
   int threads = 0;
   std::string cpu;
   std::size_t brute_triangles = 0, brute_rays = 0, bvh_triangles = 0;
-  std::vector<std::string> families;              // names
+  std::vector<std::string> families;  // names
   std::vector<std::string> family_descriptions;
   std::vector<bool> family_crossing;
-  std::vector<ModeResult> modes;                  // every intersector × supported ISA
+  std::vector<ModeResult> modes;  // every intersector × supported ISA
 };
 
 // Runs everything (tens of seconds at the default settings). Progress goes to `log` (may be null).

@@ -55,9 +55,7 @@ bool certainly_misses(const Ray& r, Vec3f a, Vec3f b, Vec3f c) {
 
 }  // namespace
 
-bool ExactHit::is_nearest(int32_t id) const {
-  return std::binary_search(nearest.begin(), nearest.end(), id);
-}
+bool ExactHit::is_nearest(int32_t id) const { return std::binary_search(nearest.begin(), nearest.end(), id); }
 
 // Exact test; on a hit stores the exact t in *t_out.
 static bool exact_test(const Ray& r, Vec3f a, Vec3f b, Vec3f c, Q* t_out) {
@@ -71,7 +69,12 @@ static bool exact_test(const Ray& r, Vec3f a, Vec3f b, Vec3f c, Q* t_out) {
   const int sg = sgn(det);
   if (sg == 0) return false;  // parallel ray or zero-area triangle
   Q un = qdot(s, h), vn = qdot(d, q), tn = qdot(e2, q);
-  if (sg < 0) { det = -det; un = -un; vn = -vn; tn = -tn; }
+  if (sg < 0) {
+    det = -det;
+    un = -un;
+    vn = -vn;
+    tn = -tn;
+  }
   // edge tests (closed)
   if (sgn(un) < 0 || sgn(vn) < 0 || Q(un + vn) > det) return false;
   // depth test (closed window)

@@ -23,9 +23,9 @@ struct TriangleMesh;
 
 // The exact nearest hit of one ray.
 struct ExactHit {
-  int32_t tri = -1;             // nearest triangle (lowest id among equal t); -1: miss
-  double t = kInf;              // the exact t, rounded to double (toward zero)
-  std::vector<int32_t> nearest; // every triangle hit at exactly the nearest t, ascending ids
+  int32_t tri = -1;              // nearest triangle (lowest id among equal t); -1: miss
+  double t = kInf;               // the exact t, rounded to double (toward zero)
+  std::vector<int32_t> nearest;  // every triangle hit at exactly the nearest t, ascending ids
 
   bool hit() const { return tri >= 0; }
   bool is_nearest(int32_t id) const;  // id is one of `nearest`

@@ -18,9 +18,7 @@ namespace {
 
 using Rng = std::mt19937_64;
 
-double uniform(Rng& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
+double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
 Vec3d in_ball(Rng& rng, double radius) {
   for (;;) {
@@ -131,9 +129,12 @@ HardCaseFamily closed_family(std::string name, std::string description, const Tr
 Vec3d point_on(const TriangleMesh& m, std::size_t t, Rng& rng, int k) {
   const Vec3d a = to_double(m.vertex(t, 0)), b = to_double(m.vertex(t, 1)), c = to_double(m.vertex(t, 2));
   double u = uniform(rng, 0, 1), v = uniform(rng, 0, 1);
-  if (u + v > 1) { u = 1 - u; v = 1 - v; }
-  if (k % 3 == 1) v = 0;          // on the edge a–b
-  if (k % 3 == 2) v = 1 - u;      // on the edge b–c
+  if (u + v > 1) {
+    u = 1 - u;
+    v = 1 - v;
+  }
+  if (k % 3 == 1) v = 0;      // on the edge a–b
+  if (k % 3 == 2) v = 1 - u;  // on the edge b–c
   return a + (b - a) * u + (c - a) * v;
 }
 
@@ -163,7 +164,9 @@ TriangleMesh grid_box() {
         for (int j = 0; j < 4; ++j) {
           auto at = [&](int a, int b) {
             std::array<int, 3> g{};
-            g[axis] = side; g[(axis + 1) % 3] = a; g[(axis + 2) % 3] = b;
+            g[axis] = side;
+            g[(axis + 1) % 3] = a;
+            g[(axis + 2) % 3] = b;
             return vertex(g);
           };
           const uint32_t p00 = at(i, j), p10 = at(i + 1, j), p11 = at(i + 1, j + 1), p01 = at(i, j + 1);
@@ -189,13 +192,13 @@ TriangleMesh make_octahedron(Vec3d centre, double radius, uint64_t rotate_seed) 
 
 TriangleMesh make_icosphere(Vec3d centre, double radius, int subdivisions, uint64_t rotate_seed) {
   const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Vec3d> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Vec3d> p = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
   for (Vec3d& v : p) v = normalize(v);
-  std::vector<std::array<uint32_t, 3>> t = {
-      {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-      {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  std::vector<std::array<uint32_t, 3>> t = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                            {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                            {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                            {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
   for (int s = 0; s < subdivisions; ++s) {
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
     auto midpoint = [&](uint32_t a, uint32_t b) {
@@ -238,16 +241,25 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
   {
     const Vec3d c = random_centre(rng, 2);
     const double r = uniform(rng, 0.2, 5);
-    HardCaseFamily f{"inside_points", "rays from random points inside a closed sphere, random directions",
-                     make_icosphere(c, r, 2, rng()), {}, true, false};
-    for (int k = 0; k < n; ++k) f.rays.push_back(Ray{to_float(c + in_ball(rng, 0.5 * r)), to_float(unit(rng))});
+    HardCaseFamily f{"inside_points",
+                     "rays from random points inside a closed sphere, random directions",
+                     make_icosphere(c, r, 2, rng()),
+                     {},
+                     true,
+                     false};
+    for (int k = 0; k < n; ++k)
+      f.rays.push_back(Ray{to_float(c + in_ball(rng, 0.5 * r)), to_float(unit(rng))});
     out.push_back(std::move(f));
   }
   {  // two triangles sharing the diagonal a–c of a rotated quad
     const Vec3d c = random_centre(rng, 1);
     const std::vector<Vec3d> quad = {{-1, -0.8, 0}, {1.1, -1, 0.05}, {0.9, 1.2, -0.03}, {-1.05, 0.95, 0}};
-    HardCaseFamily f{"quad_diagonal", "rays at points of the shared diagonal of a rotated quad",
-                     place(quad, {{0, 1, 2}, {0, 2, 3}}, c, 1.0, rng()), {}, true, false};
+    HardCaseFamily f{"quad_diagonal",
+                     "rays at points of the shared diagonal of a rotated quad",
+                     place(quad, {{0, 1, 2}, {0, 2, 3}}, c, 1.0, rng()),
+                     {},
+                     true,
+                     false};
     const Vec3d a = to_double(f.mesh.positions[0]), d = to_double(f.mesh.positions[2]);
     const Vec3d normal = normalize(cross(d - a, to_double(f.mesh.positions[1]) - a));
     for (int k = 0; k < 4 * n; ++k) {
@@ -261,7 +273,8 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
   {
     const Vec3d c = far + random_centre(rng, 10);
     const double r = uniform(rng, 5, 50);
-    out.push_back(closed_family("far_octahedron", "the octahedron family translated to (148376, 1234, -223423)",
+    out.push_back(closed_family("far_octahedron",
+                                "the octahedron family translated to (148376, 1234, -223423)",
                                 make_octahedron(c, r, rng()), c, r, n, rng));
   }
   {
@@ -275,8 +288,10 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
     TriangleMesh mesh = make_icosphere(c1, 1e-4, 1, rng());
     const std::size_t first2 = mesh.size();
     append(mesh, make_icosphere(c2, 1e-6, 1, rng()));
-    HardCaseFamily f{"tiny_closed", "rays through vertices and edges of closed spheres of radius 1e-4 and 1e-6",
-                     mesh, {}, true, false};
+    HardCaseFamily f{
+        "tiny_closed", "rays through vertices and edges of closed spheres of radius 1e-4 and 1e-6",
+        mesh,          {},
+        true,          false};
     TriangleMesh m1 = mesh, m2 = mesh;
     m1.triangles.resize(first2);
     add_targeted_rays(f, shared_points(m1), c1, 0.3e-4, n / 2, rng);
@@ -286,7 +301,11 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
   {  // open tiny triangles and huge ones, long thin slivers
     HardCaseFamily f{"tiny_huge_slivers",
                      "single triangles with edges 1e-4, 1e-6 and 1e5, and slivers 1 x 1e-5, rays at "
-                     "interior and edge points", {}, {}, false, false};
+                     "interior and edge points",
+                     {},
+                     {},
+                     false,
+                     false};
     for (int k = 0; k < 60; ++k) {
       const Vec3d c = random_centre(rng, 1);
       const double size = (k % 4 == 0) ? 1e-4 : (k % 4 == 1) ? 1e-6 : (k % 4 == 2) ? 1e5 : 1.0;
@@ -321,7 +340,11 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
   {  // axis-parallel rays and zero direction components against a grid box
     HardCaseFamily f{"axis_parallel_grid",
                      "axis-parallel rays and rays with zero direction components through grid "
-                     "vertices, edges and diagonals of a closed box", grid_box(), {}, true, false};
+                     "vertices, edges and diagonals of a closed box",
+                     grid_box(),
+                     {},
+                     true,
+                     false};
     std::uniform_int_distribution<int> grid(1, 7), axis_pick(0, 2);
     for (int k = 0; k < n; ++k) {
       const int axis = axis_pick(rng);
@@ -333,7 +356,7 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
       Vec3d org = p;
       org[axis] = side * 3;
       if (k % 4 >= 2) org[(axis + 1) % 3] += 0.5 * side;  // one zero component, not two
-      if (k % 8 == 7) {  // from inside, one zero component
+      if (k % 8 == 7) {                                   // from inside, one zero component
         org = {uniform(rng, -0.7, 0.7), uniform(rng, -0.7, 0.7), uniform(rng, -0.7, 0.7)};
         Vec3d d = unit(rng);
         d[axis] = 0;
@@ -351,7 +374,9 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
       g = {std::round(g.x * 8) / 8, std::round(g.y * 8) / 8, std::round(g.z * 8) / 8};
       const Vec3f a = to_float(g);
       const Vec3f d{0.25f * float(k % 5 - 2), 0.5f, 0.125f * float(k % 3)};
-      if (k % 3 == 0) f.mesh.add_triangle(a, {a.x + d.x, a.y + d.y, a.z + d.z}, {a.x + 2 * d.x, a.y + 2 * d.y, a.z + 2 * d.z});
+      if (k % 3 == 0)
+        f.mesh.add_triangle(a, {a.x + d.x, a.y + d.y, a.z + d.z},
+                            {a.x + 2 * d.x, a.y + 2 * d.y, a.z + 2 * d.z});
       if (k % 3 == 1) f.mesh.add_triangle(a, a, {a.x + d.x, a.y + d.y, a.z + d.z});
       if (k % 3 == 2) f.mesh.add_triangle(a, a, a);
     }
@@ -365,17 +390,20 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
   }
   {  // NaN and Inf in rays and vertices
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = kInf;
-    HardCaseFamily f{"non_finite", "NaN and Inf in ray fields and in triangle vertices", {}, {}, false, false};
+    HardCaseFamily f{"non_finite", "NaN and Inf in ray fields and in triangle vertices", {}, {}, false,
+                     false};
     for (int k = 0; k < 16; ++k) {
-      const Vec3f a{float(k % 4) * 2, float(k / 4) * 2, 5}, b{a.x + 1.5f, a.y, 5.2f}, c{a.x, a.y + 1.5f, 4.9f};
+      const Vec3f a{float(k % 4) * 2, float(k / 4) * 2, 5}, b{a.x + 1.5f, a.y, 5.2f},
+          c{a.x, a.y + 1.5f, 4.9f};
       f.mesh.add_triangle(a, b, c);
       const Vec3f bad[] = {{nan, a.y, 5}, {a.x, inf, 5}, {a.x + 1, a.y + 1, -inf}, {nan, nan, nan}};
       f.mesh.add_triangle(a, b, bad[k % 4]);  // overlaps the good triangle
     }
     for (int k = 0; k < n; ++k) {
       const int t = 2 * (k % 16);
-      const Vec3d p = (to_double(f.mesh.vertex(t, 0)) + to_double(f.mesh.vertex(t, 1)) +
-                       to_double(f.mesh.vertex(t, 2))) / 3.0;
+      const Vec3d p =
+          (to_double(f.mesh.vertex(t, 0)) + to_double(f.mesh.vertex(t, 1)) + to_double(f.mesh.vertex(t, 2))) /
+          3.0;
       Ray r = aimed(p + Vec3d{uniform(rng, -1, 1), uniform(rng, -1, 1), -4}, p);
       switch (k % 8) {
         case 1: r.org.x = nan; break;
@@ -395,8 +423,8 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
 
 HardCaseFamily random_control_family(uint64_t seed, int scale) {
   Rng rng(seed);
-  HardCaseFamily f{"random_control", "200 random triangles, random rays (rounding rarely matters)",
-                   {}, {}, false, false};
+  HardCaseFamily f{
+      "random_control", "200 random triangles, random rays (rounding rarely matters)", {}, {}, false, false};
   for (int k = 0; k < 200; ++k) {
     const Vec3d c = random_centre(rng, 1);
     f.mesh.add_triangle(to_float(c + in_ball(rng, 0.3)), to_float(c + in_ball(rng, 0.3)),

@@ -38,8 +38,10 @@ int run_accuracy(const AccuracyArgs& a) {
     write_accuracy_markdown(report, file.stream());
     file.commit();
   }
-  if (a.json) write_accuracy_json(report, stdout);
-  else if (a.output.empty()) write_accuracy_markdown(report, stdout);
+  if (a.json)
+    write_accuracy_json(report, stdout);
+  else if (a.output.empty())
+    write_accuracy_markdown(report, stdout);
   return 0;
 }
 
@@ -47,16 +49,18 @@ int run_accuracy(const AccuracyArgs& a) {
 
 void register_accuracy_command(CommandLine& cli) {
   static AccuracyArgs a;
-  cli.command("accuracy", "False misses, false hits and wrong-nearest rates of every intersector "
-                          "against an exact oracle, with throughput")
+  cli.command("accuracy",
+              "False misses, false hits and wrong-nearest rates of every intersector "
+              "against an exact oracle, with throughput")
       .flag("--json", a.json, "print the results as JSON on stdout")
       .option("-o,--output", a.output, "write the markdown report to this file (e.g. docs/accuracy.md)")
       .option("--threads", a.threads, "OpenMP threads (0: all cores)")
       .option("--scale", a.scale, "hard-case ray counts x scale (default 2)")
       .option("--size", a.size, "BVH primary rays: size x size pixels (default 512)")
       .option("--repeats", a.repeats, "timings: median of this many runs (default 3)")
-      .footer("Families and oracle: src/accuracy/hard_cases.h, src/accuracy/exact_oracle.h.\n"
-              "Example: rayvec accuracy -o docs/accuracy.md --json > accuracy.json")
+      .footer(
+          "Families and oracle: src/accuracy/hard_cases.h, src/accuracy/exact_oracle.h.\n"
+          "Example: rayvec accuracy -o docs/accuracy.md --json > accuracy.json")
       .run([] { return run_accuracy(a); });
 }
 

@@ -54,116 +54,125 @@ std::vector<const PaperModel*> chosen_models(const std::string& list) {
 void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
   std::printf("\nTable 1 (one thread; seconds: median thread CPU time)%s\n",
               divisor > 1 ? (" — rays scaled: image side / " + std::to_string(divisor) + ", rays / " +
-                             std::to_string(divisor * divisor) + " (approx.)").c_str()
+                             std::to_string(divisor * divisor) + " (approx.)")
+                                .c_str()
                           : " — full paper sizes");
   std::printf("%-6s %9s %6s | %9s %9s %9s %9s | %8s %8s | %8s %8s | %6s %6s %6s %6s | %5s %5s %6s | %s\n",
-              "model", "rays", "tris", "original", "optimized", "vec-paper", "vec-mt", "orig/vec",
-              "opt/vec", "paper o/v", "paper p/v", "G/s o", "G/s p", "G/s vp", "G/s vm", "GHz",
-              "FMA/c", "t/c vm", "mismatch");
+              "model", "rays", "tris", "original", "optimized", "vec-paper", "vec-mt", "orig/vec", "opt/vec",
+              "paper o/v", "paper p/v", "G/s o", "G/s p", "G/s vp", "G/s vm", "GHz", "FMA/c", "t/c vm",
+              "mismatch");
   double sum_o = 0, sum_p = 0, sum_po = 0, sum_pp = 0;
   int n = 0;
   for (const Table1Result& r : rows) {
     const double so = r.original.seconds / r.vec_paper.seconds;
     const double sp = r.optimized.seconds / r.vec_paper.seconds;
     if (r.baselines) {
-      std::printf("%-6s %9llu %6u | %9.4f %9.4f %9.4f %9.4f | %8.2f %8.2f | %8.2f %8.2f | %6.3f %6.3f "
-                  "%6.2f %6.2f | %5.2f %5.2f %6.2f | %llu\n",
-                  r.model.name, (unsigned long long)r.rays(), r.model.triangles, r.original.seconds,
-                  r.optimized.seconds, r.vec_paper.seconds, r.vec_mt.seconds, so, sp,
-                  r.model.speedup_original, r.model.speedup_optimized, gtests(r.tests(), r.original),
-                  gtests(r.tests(), r.optimized), gtests(r.tests(), r.vec_paper),
-                  gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.fma_per_cycle,
-                  r.vec_mt.tests_per_cycle(r.tests()), (unsigned long long)r.mismatches);
-      sum_o += so, sum_p += sp, sum_po += r.model.speedup_original,
-          sum_pp += r.model.speedup_optimized, ++n;
+      std::printf(
+          "%-6s %9llu %6u | %9.4f %9.4f %9.4f %9.4f | %8.2f %8.2f | %8.2f %8.2f | %6.3f %6.3f "
+          "%6.2f %6.2f | %5.2f %5.2f %6.2f | %llu\n",
+          r.model.name, (unsigned long long)r.rays(), r.model.triangles, r.original.seconds,
+          r.optimized.seconds, r.vec_paper.seconds, r.vec_mt.seconds, so, sp, r.model.speedup_original,
+          r.model.speedup_optimized, gtests(r.tests(), r.original), gtests(r.tests(), r.optimized),
+          gtests(r.tests(), r.vec_paper), gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.fma_per_cycle,
+          r.vec_mt.tests_per_cycle(r.tests()), (unsigned long long)r.mismatches);
+      sum_o += so, sum_p += sp, sum_po += r.model.speedup_original, sum_pp += r.model.speedup_optimized, ++n;
     } else {
-      std::printf("%-6s %9llu %6u | %9s %9s %9.4f %9.4f | %8s %8s | %8.2f %8.2f | %6s %6s %6.2f "
-                  "%6.2f | %5.2f %5.2f %6.2f | -\n",
-                  r.model.name, (unsigned long long)r.rays(), r.model.triangles, "-", "-",
-                  r.vec_paper.seconds, r.vec_mt.seconds, "-", "-", r.model.speedup_original,
-                  r.model.speedup_optimized, "-", "-", gtests(r.tests(), r.vec_paper),
-                  gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.fma_per_cycle,
-                  r.vec_mt.tests_per_cycle(r.tests()));
+      std::printf(
+          "%-6s %9llu %6u | %9s %9s %9.4f %9.4f | %8s %8s | %8.2f %8.2f | %6s %6s %6.2f "
+          "%6.2f | %5.2f %5.2f %6.2f | -\n",
+          r.model.name, (unsigned long long)r.rays(), r.model.triangles, "-", "-", r.vec_paper.seconds,
+          r.vec_mt.seconds, "-", "-", r.model.speedup_original, r.model.speedup_optimized, "-", "-",
+          gtests(r.tests(), r.vec_paper), gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.fma_per_cycle,
+          r.vec_mt.tests_per_cycle(r.tests()));
     }
   }
   if (n > 0)
-    std::printf("mean speedup (arithmetic, as the paper): original/vectorized %.2f (paper %.2f), "
-                "optimized/vectorized %.2f (paper %.2f)\n",
-                sum_o / n, sum_po / n, sum_p / n, sum_pp / n);
-  std::printf("vec-paper and vec-mt: the vectorized brute force with the paper's arithmetic and with "
-              "rayvec's default `mt`; speedups use vec-paper (the paper's vectorized version).\n");
-  std::printf("vectorized columns: median of at least %d runs; GHz: the core clock measured before "
-              "each vec-mt run (dependent-add chain), FMA/c: vector FMAs per cycle a throughput probe "
-              "got before each vec-mt run (2.00 = an uncontended core with two FMA pipes; lower = the "
-              "vector pipes are shared, e.g. with a VM neighbour, and t/c drops with it), t/c vm: "
-              "vec-mt ray-triangle tests per cycle.\n",
-              kVectorizedMinRuns);
+    std::printf(
+        "mean speedup (arithmetic, as the paper): original/vectorized %.2f (paper %.2f), "
+        "optimized/vectorized %.2f (paper %.2f)\n",
+        sum_o / n, sum_po / n, sum_p / n, sum_pp / n);
+  std::printf(
+      "vec-paper and vec-mt: the vectorized brute force with the paper's arithmetic and with "
+      "rayvec's default `mt`; speedups use vec-paper (the paper's vectorized version).\n");
+  std::printf(
+      "vectorized columns: median of at least %d runs; GHz: the core clock measured before "
+      "each vec-mt run (dependent-add chain), FMA/c: vector FMAs per cycle a throughput probe "
+      "got before each vec-mt run (2.00 = an uncontended core with two FMA pipes; lower = the "
+      "vector pipes are shared, e.g. with a VM neighbour, and t/c drops with it), t/c vm: "
+      "vec-mt ray-triangle tests per cycle.\n",
+      kVectorizedMinRuns);
 }
 
 void print_scaling(const std::vector<ScalingResult>& rows, uint32_t divisor) {
   if (rows.empty()) return;
   const uint32_t side = rows.front().side;
-  std::printf("\nThread scaling (section 5.2): 16,777,216 rays scaled to %u (image side 4096 / %u = "
-              "%u, rays / %u)\n",
-              side * side, divisor, side, divisor * divisor);
+  std::printf(
+      "\nThread scaling (section 5.2): 16,777,216 rays scaled to %u (image side 4096 / %u = "
+      "%u, rays / %u)\n",
+      side * side, divisor, side, divisor * divisor);
   std::printf("(wall-clock seconds, median)\n");
-  std::printf("%6s %-11s %7s %9s %8s %8s %9s\n", "tris", "intersector", "threads", "seconds",
-              "speedup", "G/s", "mismatch");
+  std::printf("%6s %-11s %7s %9s %8s %8s %9s\n", "tris", "intersector", "threads", "seconds", "speedup",
+              "G/s", "mismatch");
   double base = 0;
   for (const ScalingResult& r : rows) {
     if (r.threads == 1) base = r.time.seconds;
     const double tests = double(r.side) * r.side * r.triangles;
-    std::printf("%6u %-11s %7u %9.4f %8.2f %8.2f %9llu\n", r.triangles,
-                intersector_name(r.intersector), r.threads, r.time.seconds, base / r.time.seconds,
-                gtests(tests, r.time), (unsigned long long)r.mismatches);
+    std::printf("%6u %-11s %7u %9.4f %8.2f %8.2f %9llu\n", r.triangles, intersector_name(r.intersector),
+                r.threads, r.time.seconds, base / r.time.seconds, gtests(tests, r.time),
+                (unsigned long long)r.mismatches);
   }
 }
 
-void print_json(const Options& o, Isa isa, int threads, uint32_t table_divisor,
-                uint32_t scaling_divisor, const std::vector<Table1Result>& table,
-                const std::vector<ScalingResult>& scaling, uint64_t mismatches) {
-  std::printf("{\"cpu\":%s,\"isa\":%s,\"threads\":%d,\"quick\":%s,\"table1_side_divisor\":%u,"
-              "\"scaling_side_divisor\":%u,\"table1\":[",
-              json_string(cpu_features().brand).c_str(), json_string(isa_name(isa)).c_str(),
-              threads, o.quick ? "true" : "false", table_divisor, scaling_divisor);
+void print_json(const Options& o, Isa isa, int threads, uint32_t table_divisor, uint32_t scaling_divisor,
+                const std::vector<Table1Result>& table, const std::vector<ScalingResult>& scaling,
+                uint64_t mismatches) {
+  std::printf(
+      "{\"cpu\":%s,\"isa\":%s,\"threads\":%d,\"quick\":%s,\"table1_side_divisor\":%u,"
+      "\"scaling_side_divisor\":%u,\"table1\":[",
+      json_string(cpu_features().brand).c_str(), json_string(isa_name(isa)).c_str(), threads,
+      o.quick ? "true" : "false", table_divisor, scaling_divisor);
   for (std::size_t i = 0; i < table.size(); ++i) {
     const Table1Result& r = table[i];
-    std::printf("%s{\"model\":%s,\"rays\":%llu,\"paper_rays\":%u,\"triangles\":%u,"
-                "\"seconds\":{\"vectorized_paper\":%.6g,\"vectorized_mt\":%.6g",
-                i ? "," : "", json_string(r.model.name).c_str(), (unsigned long long)r.rays(),
-                r.model.rays, r.model.triangles, r.vec_paper.seconds, r.vec_mt.seconds);
+    std::printf(
+        "%s{\"model\":%s,\"rays\":%llu,\"paper_rays\":%u,\"triangles\":%u,"
+        "\"seconds\":{\"vectorized_paper\":%.6g,\"vectorized_mt\":%.6g",
+        i ? "," : "", json_string(r.model.name).c_str(), (unsigned long long)r.rays(), r.model.rays,
+        r.model.triangles, r.vec_paper.seconds, r.vec_mt.seconds);
     if (r.baselines)
-      std::printf(",\"original\":%.6g,\"optimized\":%.6g},\"speedup\":{\"original\":%.4g,"
-                  "\"optimized\":%.4g",
-                  r.original.seconds, r.optimized.seconds, r.original.seconds / r.vec_paper.seconds,
-                  r.optimized.seconds / r.vec_paper.seconds);
-    std::printf("},\"clock_ghz\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
-                "\"fma_per_cycle\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
-                "\"tests_per_cycle\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
-                "\"repeats\":{\"vectorized_paper\":%d,\"vectorized_mt\":%d}",
-                r.vec_paper.ghz, r.vec_mt.ghz, r.vec_paper.fma_per_cycle, r.vec_mt.fma_per_cycle,
-                r.vec_paper.tests_per_cycle(r.tests()),
-                r.vec_mt.tests_per_cycle(r.tests()), r.vec_paper.repeats, r.vec_mt.repeats);
+      std::printf(
+          ",\"original\":%.6g,\"optimized\":%.6g},\"speedup\":{\"original\":%.4g,"
+          "\"optimized\":%.4g",
+          r.original.seconds, r.optimized.seconds, r.original.seconds / r.vec_paper.seconds,
+          r.optimized.seconds / r.vec_paper.seconds);
+    std::printf(
+        "},\"clock_ghz\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
+        "\"fma_per_cycle\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
+        "\"tests_per_cycle\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
+        "\"repeats\":{\"vectorized_paper\":%d,\"vectorized_mt\":%d}",
+        r.vec_paper.ghz, r.vec_mt.ghz, r.vec_paper.fma_per_cycle, r.vec_mt.fma_per_cycle,
+        r.vec_paper.tests_per_cycle(r.tests()), r.vec_mt.tests_per_cycle(r.tests()), r.vec_paper.repeats,
+        r.vec_mt.repeats);
     std::printf(",\"gtests_per_s\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g",
                 gtests(r.tests(), r.vec_paper), gtests(r.tests(), r.vec_mt));
     if (r.baselines)
       std::printf(",\"original\":%.4g,\"optimized\":%.4g", gtests(r.tests(), r.original),
                   gtests(r.tests(), r.optimized));
-    std::printf("},\"paper\":{\"original\":%g,\"optimized\":%g,\"vectorized\":%g,"
-                "\"speedup_original\":%g,\"speedup_optimized\":%g},\"mismatches\":%llu,"
-                "\"mt_differences\":%llu}",
-                r.model.original_s, r.model.optimized_s, r.model.vectorized_s,
-                r.model.speedup_original, r.model.speedup_optimized,
-                (unsigned long long)r.mismatches, (unsigned long long)r.mt_differences);
+    std::printf(
+        "},\"paper\":{\"original\":%g,\"optimized\":%g,\"vectorized\":%g,"
+        "\"speedup_original\":%g,\"speedup_optimized\":%g},\"mismatches\":%llu,"
+        "\"mt_differences\":%llu}",
+        r.model.original_s, r.model.optimized_s, r.model.vectorized_s, r.model.speedup_original,
+        r.model.speedup_optimized, (unsigned long long)r.mismatches, (unsigned long long)r.mt_differences);
   }
   std::printf("],\"scaling\":[");
   for (std::size_t i = 0; i < scaling.size(); ++i) {
     const ScalingResult& r = scaling[i];
-    std::printf("%s{\"rays\":%llu,\"triangles\":%u,\"intersector\":%s,\"threads\":%u,"
-                "\"seconds\":%.6g,\"mismatches\":%llu}",
-                i ? "," : "", (unsigned long long)(uint64_t(r.side) * r.side), r.triangles,
-                json_string(intersector_name(r.intersector)).c_str(), r.threads, r.time.seconds,
-                (unsigned long long)r.mismatches);
+    std::printf(
+        "%s{\"rays\":%llu,\"triangles\":%u,\"intersector\":%s,\"threads\":%u,"
+        "\"seconds\":%.6g,\"mismatches\":%llu}",
+        i ? "," : "", (unsigned long long)(uint64_t(r.side) * r.side), r.triangles,
+        json_string(intersector_name(r.intersector)).c_str(), r.threads, r.time.seconds,
+        (unsigned long long)r.mismatches);
   }
   std::printf("],\"mismatches\":%llu}\n", (unsigned long long)mismatches);
 }
@@ -184,12 +193,13 @@ int run(const Options& o) {
   if (!o.json) {
     std::printf("rayvec bench paper: Sena et al. (2018), Table 1 and section 5.2, on a generated scene\n");
     std::printf("cpu: %s\nisa: %s (%d floats per step)\nthreads: %d (Table 1 runs on one thread)\n",
-                cpu_features().brand.c_str(), isa_name(isa),
-                triangle_kernels(isa, Intersector::mt).width, threads);
-    std::printf("scene: triangles with vertices uniform in [0,1)^3 (SplitMix64, seed 0x%llx); "
-                "rays of a pinhole camera at (0.5,0.5,-1.5) through the cube's front face "
-                "(docs/benchmarks.md)\n",
-                (unsigned long long)kPaperSceneSeed);
+                cpu_features().brand.c_str(), isa_name(isa), triangle_kernels(isa, Intersector::mt).width,
+                threads);
+    std::printf(
+        "scene: triangles with vertices uniform in [0,1)^3 (SplitMix64, seed 0x%llx); "
+        "rays of a pinhole camera at (0.5,0.5,-1.5) through the cube's front face "
+        "(docs/benchmarks.md)\n",
+        (unsigned long long)kPaperSceneSeed);
     std::fflush(stdout);
   }
   const StageLine stages("bench paper");
@@ -198,8 +208,8 @@ int run(const Options& o) {
   std::vector<Table1Result> table;
   uint64_t mismatches = 0;
   for (const PaperModel* m : models) {
-    table.push_back(run_table1_row(*m, scaled_side(m->rays, table_divisor), isa, !o.no_baselines,
-                                   min_seconds, progress));
+    table.push_back(
+        run_table1_row(*m, scaled_side(m->rays, table_divisor), isa, !o.no_baselines, min_seconds, progress));
     mismatches += table.back().mismatches;
   }
   std::vector<ScalingResult> scaling;
@@ -219,13 +229,13 @@ int run(const Options& o) {
   } else {
     print_table1(table, table_divisor);
     print_scaling(scaling, scaling_divisor);
-    std::printf("\nmismatches (ids or t differing between original, optimized and vectorized paper; "
-                "or between thread counts): %llu\n",
-                (unsigned long long)mismatches);
+    std::printf(
+        "\nmismatches (ids or t differing between original, optimized and vectorized paper; "
+        "or between thread counts): %llu\n",
+        (unsigned long long)mismatches);
   }
   if (mismatches > 0) {
-    std::fprintf(stderr, "rayvec: bench paper: %llu mismatching results\n",
-                 (unsigned long long)mismatches);
+    std::fprintf(stderr, "rayvec: bench paper: %llu mismatching results\n", (unsigned long long)mismatches);
     return 1;
   }
   return 0;
@@ -245,8 +255,9 @@ void register_bench_paper_command(Command& bench) {
       .flag("--no-scaling", o.no_scaling, "skip the thread-scaling run")
       .option("--side-divisor", o.side_divisor,
               "testing: divide every image side by this and time each run once")
-      .footer("Scene and method: docs/benchmarks.md. Exit status 1 if versions disagree.\n"
-              "Example: rayvec bench paper --quick")
+      .footer(
+          "Scene and method: docs/benchmarks.md. Exit status 1 if versions disagree.\n"
+          "Example: rayvec bench paper --quick")
       .run([] { return run(o); });
 }
 

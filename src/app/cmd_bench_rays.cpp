@@ -60,8 +60,8 @@ void parse_size(const std::string& s, int& w, int& h) {
 
 void print_set_json(const char* key, const SetResult& r, bool comma) {
   std::printf("\"%s\":{\"rays\":%llu,\"hits\":%llu,\"checksum\":%llu,\"mrays_per_s\":%.4f}%s", key,
-              (unsigned long long)r.rays, (unsigned long long)r.hits,
-              (unsigned long long)r.checksum, r.mrays_per_s(), comma ? "," : "");
+              (unsigned long long)r.rays, (unsigned long long)r.hits, (unsigned long long)r.checksum,
+              r.mrays_per_s(), comma ? "," : "");
 }
 
 void print_sets_json(const TracerRun& r) {
@@ -87,8 +87,9 @@ int run(const Options& o) {
   if (o.repeats < 1) throw InputError("--repeats: must be at least 1");
   if (o.builds < 1 || o.builds > 100) throw InputError("--builds: must be 1 to 100");
   if (o.vs_embree && !embree_available())
-    throw InputError("--vs-embree: this rayvec was built without Embree 3 (install libembree-dev "
-                     "and re-run CMake)");
+    throw InputError(
+        "--vs-embree: this rayvec was built without Embree 3 (install libembree-dev "
+        "and re-run CMake)");
   const TraceConfig config = resolve_trace_options(o.trace);
   const int threads = omp_get_max_threads();
   if (o.width != 0) {
@@ -167,47 +168,49 @@ int run(const Options& o) {
   const Mismatches mismatches = embree ? count_mismatches(run, rival_run) : Mismatches{};
 
   if (o.json) {
-    std::printf("{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
-                "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
-                "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
-                "\"bytes_per_tri\":%.3f,",
-                json_string(o.model).c_str(), mesh.size(), width, height,
-                json_string(cpu_features().brand).c_str(), json_string(isa_name(config.isa)).c_str(),
-                json_string(intersector_name(config.intersector)).c_str(), threads,
-                bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
-                bvh->traversal().direct_leaf ? "true" : "false", o.builds, build_s,
-                json_array(build_runs).c_str(), bytes_per_tri);
+    std::printf(
+        "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
+        "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
+        "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
+        "\"bytes_per_tri\":%.3f,",
+        json_string(o.model).c_str(), mesh.size(), width, height, json_string(cpu_features().brand).c_str(),
+        json_string(isa_name(config.isa)).c_str(), json_string(intersector_name(config.intersector)).c_str(),
+        threads, bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
+        bvh->traversal().direct_leaf ? "true" : "false", o.builds, build_s, json_array(build_runs).c_str(),
+        bytes_per_tri);
     print_sets_json(run);
     if (o.vs_embree) {
-      std::printf(",\"embree\":{\"build_s\":%.6f,\"build_runs_s\":%s,\"max_isa\":\"%s\",",
-                  embree_build_s, json_array(embree_build_runs).c_str(), embree_isa);
+      std::printf(",\"embree\":{\"build_s\":%.6f,\"build_runs_s\":%s,\"max_isa\":\"%s\",", embree_build_s,
+                  json_array(embree_build_runs).c_str(), embree_isa);
       print_sets_json(rival_run);
-      std::printf(",\"mismatches\":{\"primary\":%llu,\"primary_packet\":%llu,\"shadow\":%llu,"
-                  "\"incoherent\":%llu}}",
-                  (unsigned long long)mismatches.primary, (unsigned long long)mismatches.primary_packet,
-                  (unsigned long long)mismatches.shadow, (unsigned long long)mismatches.incoherent);
+      std::printf(
+          ",\"mismatches\":{\"primary\":%llu,\"primary_packet\":%llu,\"shadow\":%llu,"
+          "\"incoherent\":%llu}}",
+          (unsigned long long)mismatches.primary, (unsigned long long)mismatches.primary_packet,
+          (unsigned long long)mismatches.shadow, (unsigned long long)mismatches.incoherent);
     }
     std::printf("}\n");
     return 0;
   }
-  std::printf("model: %s, %zu triangles; %dx%d; median of %d runs after a warm-up%s (%s clock; "
-              "builds: wall clock, median of %d%s)\n",
-              o.model.c_str(), mesh.size(), width, height, o.repeats,
-              embree ? ", interleaved with embree's" : "",
-              bench_uses_thread_cpu_time() ? "thread CPU-time" : "wall", o.builds,
-              embree ? " each, rayvec's then embree's" : "");
+  std::printf(
+      "model: %s, %zu triangles; %dx%d; median of %d runs after a warm-up%s (%s clock; "
+      "builds: wall clock, median of %d%s)\n",
+      o.model.c_str(), mesh.size(), width, height, o.repeats, embree ? ", interleaved with embree's" : "",
+      bench_uses_thread_cpu_time() ? "thread CPU-time" : "wall", o.builds,
+      embree ? " each, rayvec's then embree's" : "");
   std::printf("cpu: %s; isa: %s; intersector: %s; threads: %d\n", cpu_features().brand.c_str(),
               isa_name(config.isa), intersector_name(config.intersector), threads);
-  std::printf("bvh: %d-wide, %u nodes, %u leaves, depth %u, leaf kernel %s; build %.4f s; %.1f "
-              "bytes/triangle (nodes %.1f + triangles %.1f)\n",
-              bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), bvh->tree().depth(),
-              bvh->traversal().direct_leaf ? "called directly" : "through the kernel table",
-              build_s, bytes_per_tri, double(bvh->tree().bytes()) / tris,
-              double(bvh->triangles().bytes()) / tris);
+  std::printf(
+      "bvh: %d-wide, %u nodes, %u leaves, depth %u, leaf kernel %s; build %.4f s; %.1f "
+      "bytes/triangle (nodes %.1f + triangles %.1f)\n",
+      bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), bvh->tree().depth(),
+      bvh->traversal().direct_leaf ? "called directly" : "through the kernel table", build_s, bytes_per_tri,
+      double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
   if (o.vs_embree)
-    std::printf("embree: max_isa=%s, RTC_BUILD_QUALITY_HIGH build %.4f s (rayvec/embree build time "
-                "%.2f)\n",
-                embree_isa, embree_build_s, embree_build_s > 0 ? build_s / embree_build_s : 0.0);
+    std::printf(
+        "embree: max_isa=%s, RTC_BUILD_QUALITY_HIGH build %.4f s (rayvec/embree build time "
+        "%.2f)\n",
+        embree_isa, embree_build_s, embree_build_s > 0 ? build_s / embree_build_s : 0.0);
   std::printf("%-15s %10s %10s %22s %9s", "set", "rays", "hits", "checksum", "Mrays/s");
   if (o.vs_embree) std::printf(" %9s %8s %10s", "embree", "ratio", "mismatches");
   std::printf("\n");
@@ -218,9 +221,10 @@ int run(const Options& o) {
   print_row("shadow", run.shadow, e ? &rival_run.shadow : nullptr, mismatches.shadow);
   print_row("incoherent", run.incoherent, e ? &rival_run.incoherent : nullptr, mismatches.incoherent);
   if (e)
-    std::printf("ratio = rayvec Mrays/s / embree Mrays/s (rtcIntersect1, rtcIntersect16 per 4x4 "
-                "tile, rtcOccluded1, rtcIntersect1); mismatches = rays whose triangle id (shadow: "
-                "occlusion) differs\n");
+    std::printf(
+        "ratio = rayvec Mrays/s / embree Mrays/s (rtcIntersect1, rtcIntersect16 per 4x4 "
+        "tile, rtcOccluded1, rtcIntersect1); mismatches = rays whose triangle id (shadow: "
+        "occlusion) differs\n");
   return 0;
 }
 
@@ -228,8 +232,9 @@ int run(const Options& o) {
 
 void register_bench_rays_command(Command& bench) {
   static Options o;
-  Command& cmd = bench.subcommand("rays", "BVH build time and Mrays/s of primary, packet, shadow "
-                                          "and incoherent rays on one OBJ mesh (optionally vs Embree)");
+  Command& cmd = bench.subcommand("rays",
+                                  "BVH build time and Mrays/s of primary, packet, shadow "
+                                  "and incoherent rays on one OBJ mesh (optionally vs Embree)");
   cmd.positional("MODEL", o.model, "Wavefront OBJ mesh")
       .option("--size", o.size, "image size WxH of the primary rays (default 1024x1024)")
       .flag("--json", o.json, "print one JSON object instead of the table")
@@ -237,8 +242,9 @@ void register_bench_rays_command(Command& bench) {
             "also trace the same rays with Embree 3 (RTC_BUILD_QUALITY_HIGH, its ISA capped at "
             "rayvec's: --isa avx2 compares AVX2 with AVX2) and print ratios and id mismatches; "
             "exit status 2 when rayvec was built without Embree")
-      .option("--repeats", o.repeats, "timed runs per ray set after one warm-up; the median is "
-                                      "reported (default 5)")
+      .option("--repeats", o.repeats,
+              "timed runs per ray set after one warm-up; the median is "
+              "reported (default 5)")
       .option("--builds", o.builds,
               "BVH builds timed (with --vs-embree: as many of Embree's after them); the median "
               "is reported, the last tree is traced (default 3)")
@@ -246,8 +252,7 @@ void register_bench_rays_command(Command& bench) {
               "children per BVH node: 4, 8 or 16; 0 = the default (AVX-512 and AVX2: 16 from 32768 "
               "triangles up, else 8; AVX-512 on Intel: 16 at every size)")
       .option("--max-leaf", o.max_leaf, "tuning: most triangles per BVH leaf (0 = default)")
-      .option("--leaf-block", o.leaf_block,
-              "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)")
+      .option("--leaf-block", o.leaf_block, "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)")
       .option("--direct-leaf", o.direct_leaf,
               "tuning: closest-hit traversal calls the mt leaf kernel directly (1) or through the "
               "kernel table (0); -1 = default (directly on Intel's AVX-512)");

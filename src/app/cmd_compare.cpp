@@ -38,8 +38,10 @@ void register_compare_command(CommandLine& cli) {
         const ImageDifference d = compare_images(read_image(o.a), read_image(o.b), threshold);
         std::printf("size: %ld pixels\n", d.pixels);
         std::printf("rmse: %.6g\n", d.rmse);
-        if (std::isinf(d.psnr)) std::printf("psnr: inf dB\n");
-        else std::printf("psnr: %.2f dB\n", d.psnr);
+        if (std::isinf(d.psnr))
+          std::printf("psnr: inf dB\n");
+        else
+          std::printf("psnr: %.2f dB\n", d.psnr);
         std::printf("max pixel error: %.6g\n", d.max_error);
         std::printf("pixels over %.6g: %ld (%.3f%%)\n", threshold, d.over_threshold,
                     d.pixels ? 100.0 * double(d.over_threshold) / double(d.pixels) : 0.0);

@@ -57,8 +57,8 @@ int run_hits(const HitsArgs& args) {
                "hits: %zu rays, %zu triangles, %zu %s, %.3f s, %.2f Mrays/s (%s, isa %s, "
                "intersector %s, %d threads)\n",
                rays.size(), model.mesh.size(), hit_count, args.any ? "occluded" : "hits", seconds,
-               seconds > 0 ? rays.size() / seconds * 1e-6 : 0.0, accel_name(kind),
-               isa_name(config.isa), intersector_name(config.intersector), omp_get_max_threads());
+               seconds > 0 ? rays.size() / seconds * 1e-6 : 0.0, accel_name(kind), isa_name(config.isa),
+               intersector_name(config.intersector), omp_get_max_threads());
   return 0;
 }
 
@@ -88,7 +88,8 @@ Example:
 
 void register_hits_command(CommandLine& cli) {
   static HitsArgs args;
-  Command& cmd = cli.command("hits", "Trace the rays of a CSV file against an OBJ mesh; print the hits as CSV");
+  Command& cmd =
+      cli.command("hits", "Trace the rays of a CSV file against an OBJ mesh; print the hits as CSV");
   cmd.required("--mesh", args.mesh, "the triangle mesh (Wavefront OBJ)")
       .required("--rays", args.rays, "the rays (CSV: ox,oy,oz,dx,dy,dz[,tmin,tmax])")
       .flag("--any", args.any, "any-hit (occlusion) query: print ray,hit with 0/1")

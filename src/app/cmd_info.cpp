@@ -11,27 +11,26 @@
 namespace rayvec {
 
 void register_info_command(CommandLine& cli) {
-  cli.command("info", "Show CPU features, the ISA rayvec picks, threads and library versions")
-      .run([] {
-        const CpuFeatures& f = cpu_features();
-        std::printf("rayvec %s\n", RAYVEC_VERSION);
-        std::printf("cpu: %s (%s)\n", f.brand.c_str(), f.vendor.c_str());
-        std::printf("cpu features: sse2=%d avx=%d avx2=%d fma=%d bmi2=%d avx512f=%d avx512dq=%d "
-                    "avx512bw=%d avx512vl=%d avx512cd=%d\n",
-                    f.sse2, f.avx, f.avx2, f.fma, f.bmi2, f.avx512f, f.avx512dq, f.avx512bw,
-                    f.avx512vl, f.avx512cd);
-        std::printf("os saves: ymm=%d zmm=%d\n", f.os_ymm, f.os_zmm);
-        std::printf("isa: %s (auto)\n", isa_name(best_isa()));
-        for (Isa isa : kAllIsas) {
-          const bool ok = isa_supported(isa);
-          std::printf("  %-7s %s", isa_name(isa), ok ? "supported" : "not supported");
-          if (ok) std::printf(", %d floats per step", triangle_kernels(isa, Intersector::mt).width);
-          std::printf("\n");
-        }
-        std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
-        std::printf("compiler: g++ %s, OpenMP %d\n", __VERSION__, _OPENMP);
-        return 0;
-      });
+  cli.command("info", "Show CPU features, the ISA rayvec picks, threads and library versions").run([] {
+    const CpuFeatures& f = cpu_features();
+    std::printf("rayvec %s\n", RAYVEC_VERSION);
+    std::printf("cpu: %s (%s)\n", f.brand.c_str(), f.vendor.c_str());
+    std::printf(
+        "cpu features: sse2=%d avx=%d avx2=%d fma=%d bmi2=%d avx512f=%d avx512dq=%d "
+        "avx512bw=%d avx512vl=%d avx512cd=%d\n",
+        f.sse2, f.avx, f.avx2, f.fma, f.bmi2, f.avx512f, f.avx512dq, f.avx512bw, f.avx512vl, f.avx512cd);
+    std::printf("os saves: ymm=%d zmm=%d\n", f.os_ymm, f.os_zmm);
+    std::printf("isa: %s (auto)\n", isa_name(best_isa()));
+    for (Isa isa : kAllIsas) {
+      const bool ok = isa_supported(isa);
+      std::printf("  %-7s %s", isa_name(isa), ok ? "supported" : "not supported");
+      if (ok) std::printf(", %d floats per step", triangle_kernels(isa, Intersector::mt).width);
+      std::printf("\n");
+    }
+    std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
+    std::printf("compiler: g++ %s, OpenMP %d\n", __VERSION__, _OPENMP);
+    return 0;
+  });
 }
 
 }  // namespace rayvec

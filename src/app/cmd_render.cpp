@@ -31,10 +31,14 @@ RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& outp
   if (list.empty()) return aov;
   std::stringstream ss(list);
   for (std::string item; std::getline(ss, item, ',');) {
-    if (item == "depth") aov.depth = true;
-    else if (item == "normal") aov.normal = true;
-    else if (item == "id") aov.id = true;
-    else throw InputError("--aov: unknown '" + item + "' (choose from depth, normal, id)");
+    if (item == "depth")
+      aov.depth = true;
+    else if (item == "normal")
+      aov.normal = true;
+    else if (item == "id")
+      aov.id = true;
+    else
+      throw InputError("--aov: unknown '" + item + "' (choose from depth, normal, id)");
   }
   if (output.size() < 4 || output.substr(output.size() - 4) != ".exr")
     throw InputError("--aov: extra channels need an .exr output (got " + output + ")");
@@ -72,8 +76,7 @@ int run_render(RenderArgs& a) {
   scene.render.aov = aov;
   const RenderSettings& settings = scene.render;
   if (a.trace.intersector.empty())
-    a.trace.intersector = settings.intersector.empty() ? TraceOptions{}.intersector
-                                                       : settings.intersector;
+    a.trace.intersector = settings.intersector.empty() ? TraceOptions{}.intersector : settings.intersector;
   const TraceConfig config = resolve_trace_options(a.trace);
   const AccelKind kind = resolve_accel(a.trace);
   stats.load_seconds = seconds_since(t);

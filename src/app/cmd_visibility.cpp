@@ -54,7 +54,8 @@ int run_visibility(const VisibilityArgs& args) {
 
   const VisibilityMesh scene = build_visibility_mesh(verts, faces);
   if (scene.dropped)
-    std::fprintf(stderr, "warning: %s: %zu of %zu faces dropped: they use a vertex with a non-finite coordinate\n",
+    std::fprintf(stderr,
+                 "warning: %s: %zu of %zu faces dropped: they use a vertex with a non-finite coordinate\n",
                  args.faces.c_str(), scene.dropped, faces.size());
   const auto accel = make_accelerator(kind, scene.mesh, config);
   const auto start = std::chrono::steady_clock::now();
@@ -74,9 +75,9 @@ int run_visibility(const VisibilityArgs& args) {
   std::fprintf(stderr,
                "visibility: %zu vertices (%zu visible, %zu blocked, %zu nan), %zu triangles, %.3f s "
                "(%s, isa %s, intersector %s, %d threads)\n",
-               result.size(), visible, result.size() - visible - undefined, undefined,
-               scene.mesh.size(), seconds, accel_name(kind), isa_name(config.isa),
-               intersector_name(config.intersector), omp_get_max_threads());
+               result.size(), visible, result.size() - visible - undefined, undefined, scene.mesh.size(),
+               seconds, accel_name(kind), isa_name(config.isa), intersector_name(config.intersector),
+               omp_get_max_threads());
   return 0;
 }
 
@@ -109,8 +110,8 @@ Example:
 
 void register_visibility_command(CommandLine& cli) {
   static VisibilityArgs args;
-  Command& cmd = cli.command("visibility",
-                             "Which vertices are visible from an origin (verts.csv + meshes.csv)");
+  Command& cmd =
+      cli.command("visibility", "Which vertices are visible from an origin (verts.csv + meshes.csv)");
   cmd.required("--verts", args.verts, "vertex rows x,y,z (CSV)")
       .required("--faces", args.faces, "triangles as three 0-based vertex rows (CSV)")
       .option("--origin", args.origin, "the eye point X,Y,Z")

@@ -16,5 +16,4 @@ void register_accuracy_command(CommandLine& cli);
 void register_bench_paper_command(Command& bench);
 void register_bench_rays_command(Command& bench);
 
-
 }  // namespace rayvec

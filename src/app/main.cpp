@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
   rayvec::register_compare_command(cli);
   rayvec::register_render_command(cli);
   rayvec::register_accuracy_command(cli);
-  rayvec::Command& bench = cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");
+  rayvec::Command& bench =
+      cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");
   // bench subcommands register on it: register_bench_<name>_command(bench)
   rayvec::register_bench_paper_command(bench);
   rayvec::register_bench_rays_command(bench);

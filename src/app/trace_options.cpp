@@ -8,8 +8,7 @@
 namespace rayvec {
 
 void add_trace_options(Command& cmd, TraceOptions& options, bool with_accel) {
-  cmd.option("--isa", options.isa,
-             "SIMD instruction set: auto (best this CPU has), scalar, avx2 or avx512")
+  cmd.option("--isa", options.isa, "SIMD instruction set: auto (best this CPU has), scalar, avx2 or avx512")
       .option("--intersector", options.intersector,
               "ray-triangle arithmetic: mt (float, no epsilon), mt64 (double), paper "
               "(Sena et al. 2018: |det| < 1e-6 culled, t > 1e-6), watertight (Woop et al. 2013: no ray "

@@ -12,7 +12,7 @@ struct TraceOptions {
   std::string isa = "auto";
   std::string intersector = "mt";
   std::string accel = "bvh";  // brute stays available for the paper's workload
-  int threads = 0;  // 0: all cores
+  int threads = 0;            // 0: all cores
 };
 
 // Declares the options on `cmd`; with_accel adds --accel.

@@ -20,9 +20,7 @@ double measure_clock_ghz() {
   long x = 0, i = kIterations;
   const long one = 1;
   const double start = thread_cpu_seconds();
-  __asm__ volatile("1:\n .rept 16\n add %2, %0\n .endr\n dec %1\n jnz 1b\n"
-                   : "+r"(x), "+r"(i)
-                   : "r"(one));
+  __asm__ volatile("1:\n .rept 16\n add %2, %0\n .endr\n dec %1\n jnz 1b\n" : "+r"(x), "+r"(i) : "r"(one));
   const double seconds = thread_cpu_seconds() - start;
   return seconds > 0 ? double(kIterations) * 16.0 / seconds / 1e9 : 0.0;
 }

@@ -21,8 +21,7 @@ namespace {
 class EmbreeTracer final : public RayTracer {
  public:
   EmbreeTracer(const TriangleMesh& mesh, int threads, const char* max_isa, double& build_seconds) {
-    const std::string config =
-        "threads=" + std::to_string(threads > 0 ? threads : 0) + ",max_isa=" + max_isa;
+    const std::string config = "threads=" + std::to_string(threads > 0 ? threads : 0) + ",max_isa=" + max_isa;
     device_ = rtcNewDevice(config.c_str());
     if (!device_) throw RuntimeError("Embree: rtcNewDevice failed");
     scene_ = rtcNewScene(device_);
@@ -30,9 +29,8 @@ class EmbreeTracer final : public RayTracer {
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
     // +1 float of slack: Embree may load 16 bytes at the last vertex
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                          mesh.positions.size() + 1));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), mesh.positions.size() + 1));
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
       v[3 * i] = mesh.positions[i].x;
       v[3 * i + 1] = mesh.positions[i].y;
@@ -61,8 +59,8 @@ class EmbreeTracer final : public RayTracer {
     for (std::size_t i = 0; i < n; ++i) {
       RTCRayHit rh;
       const Ray& r = rays[i];
-      rh.ray = RTCRay{r.org.x, r.org.y, r.org.z, r.tmin, r.dir.x, r.dir.y, r.dir.z, 0.0f, r.tmax,
-                      0xffffffffu, 0, 0};
+      rh.ray = RTCRay{r.org.x, r.org.y, r.org.z, r.tmin,      r.dir.x, r.dir.y,
+                      r.dir.z, 0.0f,    r.tmax,  0xffffffffu, 0,       0};
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(scene_, &ctx, &rh);
       hits[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID
@@ -77,10 +75,18 @@ class EmbreeTracer final : public RayTracer {
     for (std::size_t k = 0; k < 16; ++k) {
       const Ray& r = rays[k < n ? k : 0];
       valid[k] = k < n ? -1 : 0;
-      p.ray.org_x[k] = r.org.x; p.ray.org_y[k] = r.org.y; p.ray.org_z[k] = r.org.z;
-      p.ray.dir_x[k] = r.dir.x; p.ray.dir_y[k] = r.dir.y; p.ray.dir_z[k] = r.dir.z;
-      p.ray.tnear[k] = r.tmin; p.ray.tfar[k] = r.tmax; p.ray.time[k] = 0.0f;
-      p.ray.mask[k] = 0xffffffffu; p.ray.id[k] = unsigned(k); p.ray.flags[k] = 0;
+      p.ray.org_x[k] = r.org.x;
+      p.ray.org_y[k] = r.org.y;
+      p.ray.org_z[k] = r.org.z;
+      p.ray.dir_x[k] = r.dir.x;
+      p.ray.dir_y[k] = r.dir.y;
+      p.ray.dir_z[k] = r.dir.z;
+      p.ray.tnear[k] = r.tmin;
+      p.ray.tfar[k] = r.tmax;
+      p.ray.time[k] = 0.0f;
+      p.ray.mask[k] = 0xffffffffu;
+      p.ray.id[k] = unsigned(k);
+      p.ray.flags[k] = 0;
       p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
     }
     RTCIntersectContext ctx;
@@ -98,8 +104,8 @@ class EmbreeTracer final : public RayTracer {
     rtcInitIntersectContext(&ctx);
     for (std::size_t i = 0; i < n; ++i) {
       const Ray& r = rays[i];
-      RTCRay ray{r.org.x, r.org.y, r.org.z, r.tmin, r.dir.x, r.dir.y, r.dir.z, 0.0f, r.tmax,
-                 0xffffffffu, 0, 0};
+      RTCRay ray{r.org.x, r.org.y, r.org.z, r.tmin,      r.dir.x, r.dir.y,
+                 r.dir.z, 0.0f,    r.tmax,  0xffffffffu, 0,       0};
       rtcOccluded1(scene_, &ctx, &ray);
       out[i] = ray.tfar < 0.0f ? 1 : 0;  // Embree sets tfar = -inf on a hit
     }
@@ -114,8 +120,8 @@ class EmbreeTracer final : public RayTracer {
 
 bool embree_available() { return true; }
 
-std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads,
-                                              const char* max_isa, double& build_seconds) {
+std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads, const char* max_isa,
+                                              double& build_seconds) {
   return std::make_unique<EmbreeTracer>(mesh, threads, max_isa, build_seconds);
 }
 

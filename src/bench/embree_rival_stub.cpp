@@ -7,8 +7,7 @@ namespace rayvec {
 
 bool embree_available() { return false; }
 
-std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh&, int, const char*,
-                                              double& build_seconds) {
+std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh&, int, const char*, double& build_seconds) {
   build_seconds = 0;
   return nullptr;
 }

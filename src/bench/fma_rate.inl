@@ -15,9 +15,18 @@ double fma_per_ns() {
            a9 = vfloat::broadcast(1.9f), a10 = vfloat::broadcast(2.0f), a11 = vfloat::broadcast(2.1f);
     const double start = thread_cpu_seconds();
     for (long i = 0; i < kIterations; ++i) {
-      a0 = fmadd(a0, m, c); a1 = fmadd(a1, m, c); a2 = fmadd(a2, m, c); a3 = fmadd(a3, m, c);
-      a4 = fmadd(a4, m, c); a5 = fmadd(a5, m, c); a6 = fmadd(a6, m, c); a7 = fmadd(a7, m, c);
-      a8 = fmadd(a8, m, c); a9 = fmadd(a9, m, c); a10 = fmadd(a10, m, c); a11 = fmadd(a11, m, c);
+      a0 = fmadd(a0, m, c);
+      a1 = fmadd(a1, m, c);
+      a2 = fmadd(a2, m, c);
+      a3 = fmadd(a3, m, c);
+      a4 = fmadd(a4, m, c);
+      a5 = fmadd(a5, m, c);
+      a6 = fmadd(a6, m, c);
+      a7 = fmadd(a7, m, c);
+      a8 = fmadd(a8, m, c);
+      a9 = fmadd(a9, m, c);
+      a10 = fmadd(a10, m, c);
+      a11 = fmadd(a11, m, c);
     }
     const double seconds = thread_cpu_seconds() - start;
     // the results are used, so the loop cannot be dropped

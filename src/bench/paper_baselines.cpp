@@ -16,9 +16,9 @@ struct Best {
 // Figure 1, lines 15–33, for one ray and one triangle: updates `best` when the triangle is hit
 // nearer. Every comparison is written so that NaN fails it (as the vector kernels' ordered compares
 // do), hence `!(u >= 0 && u <= 1)` rather than the paper's `u < 0 || u > 1`.
-inline void test_triangle(float ox, float oy, float oz, float dx, float dy, float dz, float tmin,
-                          float tmax, float v0x, float v0y, float v0z, float v1x, float v1y,
-                          float v1z, float v2x, float v2y, float v2z, int32_t id, Best& best) {
+inline void test_triangle(float ox, float oy, float oz, float dx, float dy, float dz, float tmin, float tmax,
+                          float v0x, float v0y, float v0z, float v1x, float v1y, float v1z, float v2x,
+                          float v2y, float v2z, int32_t id, Best& best) {
   // edge1 = v1 - v0, edge2 = v2 - v0, h = d × edge2, a = edge1 · h
   const float e1x = v1x - v0x, e1y = v1y - v0y, e1z = v1z - v0z;
   const float e2x = v2x - v0x, e2y = v2y - v0y, e2z = v2z - v0z;
@@ -78,9 +78,8 @@ void closest_original(const PaperAosTriangles& tris, std::span<const Ray> rays, 
     Best best{kInf, 0.0f, 0.0f, -1};
     for (std::size_t i = 0; i < n; ++i) {
       const float* t = p + 9 * i;
-      test_triangle(ray.org.x, ray.org.y, ray.org.z, ray.dir.x, ray.dir.y, ray.dir.z, ray.tmin,
-                    ray.tmax, t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8],
-                    static_cast<int32_t>(i), best);
+      test_triangle(ray.org.x, ray.org.y, ray.org.z, ray.dir.x, ray.dir.y, ray.dir.z, ray.tmin, ray.tmax,
+                    t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8], static_cast<int32_t>(i), best);
     }
     hits[r] = to_hit(best);
   }
@@ -98,8 +97,8 @@ void closest_optimized(const PaperSoaTriangles& tris, const RayBatch& rays, std:
     const float tmin = rays.tmin[r], tmax = rays.tmax[r];
     Best best{kInf, 0.0f, 0.0f, -1};
     for (std::size_t i = 0; i < n; ++i)
-      test_triangle(ox, oy, oz, dx, dy, dz, tmin, tmax, v0x[i], v0y[i], v0z[i], v1x[i], v1y[i],
-                    v1z[i], v2x[i], v2y[i], v2z[i], static_cast<int32_t>(i), best);
+      test_triangle(ox, oy, oz, dx, dy, dz, tmin, tmax, v0x[i], v0y[i], v0z[i], v1x[i], v1y[i], v1z[i],
+                    v2x[i], v2y[i], v2z[i], static_cast<int32_t>(i), best);
     hits[r] = to_hit(best);
   }
 }

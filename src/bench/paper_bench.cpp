@@ -55,8 +55,8 @@ double now(bool thread_cpu) {
 // first kVectorizedMinRuns runs (--quick repeats short runs up to 15 times; the clock needs fewer).
 // `calibrate` also runs the FMA throughput probe of `isa` (bench/fma_rate.h) next to the clock.
 template <typename Fn>
-Timing time_median(double min_seconds, bool thread_cpu, Fn&& fn, int min_runs = 1,
-                   bool calibrate = false, Isa isa = Isa::scalar) {
+Timing time_median(double min_seconds, bool thread_cpu, Fn&& fn, int min_runs = 1, bool calibrate = false,
+                   Isa isa = Isa::scalar) {
   std::vector<double> runs, clocks, fmas;
   double total = 0;
   do {
@@ -87,8 +87,7 @@ void trace_vectorized(const Accelerator& accel, const std::vector<Ray>& rays, st
   const auto chunks = static_cast<std::int64_t>((rays.size() + kChunk - 1) / kChunk);
   auto run_chunk = [&](std::int64_t c) {
     const std::size_t begin = std::size_t(c) * kChunk;
-    accel.closest_stream(rays.data() + begin, hits.data() + begin,
-                         std::min(kChunk, rays.size() - begin));
+    accel.closest_stream(rays.data() + begin, hits.data() + begin, std::min(kChunk, rays.size() - begin));
   };
   if (threads <= 1) {
     for (std::int64_t c = 0; c < chunks; ++c) run_chunk(c);
@@ -156,16 +155,15 @@ Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, boo
   return out;
 }
 
-std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa,
-                                       Intersector intersector, int max_threads,
-                                       double min_seconds, const Progress& progress) {
+std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa, Intersector intersector,
+                                       int max_threads, double min_seconds, const Progress& progress) {
   const TriangleMesh mesh = paper_triangles(triangles);
   const std::vector<Ray> rays = to_rays(paper_camera_rays(side));
   const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, intersector});
   std::vector<Hit> reference(rays.size()), hits(rays.size());
   // The thread counts take turns, one run each per round, until each has run for min_seconds and
-  // kScalingMinRuns rounds (at most 15 rounds): on a VM whose speed drifts for seconds at a time, timing all one-thread runs
-  // and then all two-thread runs would put the drift into the speedup.
+  // kScalingMinRuns rounds (at most 15 rounds): on a VM whose speed drifts for seconds at a time, timing all
+  // one-thread runs and then all two-thread runs would put the drift into the speedup.
   std::vector<ScalingResult> out(std::size_t(std::max(max_threads, 1)));
   std::vector<std::vector<double>> runs(out.size());
   std::vector<double> total(out.size(), 0.0);

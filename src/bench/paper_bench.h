@@ -45,8 +45,8 @@ struct Timing {
 
 struct Table1Result {
   PaperModel model;
-  uint32_t side = 0;       // image side used: rays = side²
-  bool baselines = true;   // false when original/optimized were skipped
+  uint32_t side = 0;      // image side used: rays = side²
+  bool baselines = true;  // false when original/optimized were skipped
   Timing original, optimized, vec_paper, vec_mt;
   uint64_t mismatches = 0;      // rays where original, optimized and vectorized `paper` disagree
   uint64_t mt_differences = 0;  // rays where `mt` picks another triangle than `paper` (allowed)
@@ -83,8 +83,7 @@ inline constexpr int kScalingMinRuns = 3;
 
 // The vectorized brute force at 1..max_threads threads for one scaling size and intersector, the
 // thread counts timed in turns (one run each per round), medians on the wall clock.
-std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa,
-                                       Intersector intersector, int max_threads,
-                                       double min_seconds, const Progress& progress);
+std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa, Intersector intersector,
+                                       int max_threads, double min_seconds, const Progress& progress);
 
 }  // namespace rayvec

@@ -39,8 +39,8 @@ RayBatch paper_camera_rays(uint32_t side) {
       const Vec3d target{(i + 0.5) / side, (j + 0.5) / side, 0.0};
       const Vec3d d = target - eye;
       const double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-      rays.push_back(Ray{Vec3f(eye), Vec3f{float(d.x / len), float(d.y / len), float(d.z / len)},
-                         0.0f, kInf});
+      rays.push_back(
+          Ray{Vec3f(eye), Vec3f{float(d.x / len), float(d.y / len), float(d.z / len)}, 0.0f, kInf});
     }
   return rays;
 }

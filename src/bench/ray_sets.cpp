@@ -20,9 +20,7 @@ uint64_t splitmix64(uint64_t& state) {
 
 double uniform01(uint64_t& state) { return double(splitmix64(state) >> 40) / double(1u << 24); }
 
-Vec3d hit_point(const Ray& r, const Hit& h) {
-  return Vec3d(r.org) + Vec3d(r.dir) * double(h.t);
-}
+Vec3d hit_point(const Ray& r, const Hit& h) { return Vec3d(r.org) + Vec3d(r.dir) * double(h.t); }
 
 }  // namespace
 

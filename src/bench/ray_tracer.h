@@ -32,8 +32,8 @@ std::unique_ptr<RayTracer> make_accelerator_tracer(const Accelerator& accel);
 // (Embree's names: "sse2", "avx2", "avx512"; see embree_max_isa): rtcIntersect1, rtcIntersect16,
 // rtcOccluded1. Null when rayvec was built without Embree. build_seconds receives the time of
 // rtcCommitScene.
-std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads,
-                                              const char* max_isa, double& build_seconds);
+std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads, const char* max_isa,
+                                              double& build_seconds);
 bool embree_available();
 
 }  // namespace rayvec

@@ -11,7 +11,7 @@
 namespace rayvec {
 namespace {
 
-constexpr std::size_t kChunk = 256;  // rays per OpenMP work item (single rays)
+constexpr std::size_t kChunk = 256;     // rays per OpenMP work item (single rays)
 constexpr std::size_t kTileChunk = 16;  // tiles per work item (packets)
 
 // With one thread the OpenMP loops run on the calling thread, so its CPU time is the work alone —
@@ -87,8 +87,8 @@ BenchRays make_bench_rays(const TriangleMesh& mesh, int width, int height, const
   return b;
 }
 
-std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& tracers,
-                                      const BenchRays& b, int repeats, const Progress& progress) {
+std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& tracers, const BenchRays& b,
+                                      int repeats, const Progress& progress) {
   auto stage = [&](const char* set) {
     if (progress) progress(std::string("tracing ") + set);
   };
@@ -106,11 +106,10 @@ std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& trace
   for (std::size_t k = 0; k < n; ++k) runs[k].primary = summarize(b.primary, runs[k].primary_hits, s[k]);
   stage("primary packets");
   s = median_seconds([&](std::size_t k) { trace_tiles(*tracers[k], b, runs[k].packet_hits); }, n, repeats);
-  for (std::size_t k = 0; k < n; ++k)
-    runs[k].primary_packet = summarize(b.tiles, runs[k].packet_hits, s[k]);
+  for (std::size_t k = 0; k < n; ++k) runs[k].primary_packet = summarize(b.tiles, runs[k].packet_hits, s[k]);
   stage("shadow rays");
-  s = median_seconds(
-      [&](std::size_t k) { trace_occluded(*tracers[k], b.shadow, runs[k].shadow_occluded); }, n, repeats);
+  s = median_seconds([&](std::size_t k) { trace_occluded(*tracers[k], b.shadow, runs[k].shadow_occluded); },
+                     n, repeats);
   for (std::size_t k = 0; k < n; ++k) {
     TracerRun& run = runs[k];
     run.shadow = SetResult{b.shadow.rays.size(), 0, occluded_checksum(b.shadow, run.shadow_occluded), s[k]};

@@ -43,8 +43,8 @@ struct TracerRun {
 // stretches of machine time: on a VM whose speed drifts for seconds at a time, timing one tracer's
 // five runs and then the other's would put the drift into the ratio. One TracerRun per tracer.
 // `progress`, if set, is told each set before it runs.
-std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& tracers,
-                                      const BenchRays& rays, int repeats, const Progress& progress = {});
+std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& tracers, const BenchRays& rays,
+                                      int repeats, const Progress& progress = {});
 
 // Rays whose triangle id (or occlusion) differs between two runs, per set.
 struct Mismatches {

@@ -203,9 +203,7 @@ class Builder {
     return best;
   }
 
-  float leaf_cost(uint32_t n) const {
-    return float((n + config_.leaf_block - 1) / config_.leaf_block);
-  }
+  float leaf_cost(uint32_t n) const { return float((n + config_.leaf_block - 1) / config_.leaf_block); }
 
   void make_leaf(uint32_t node, uint32_t begin, uint32_t end, const BBox& box) {
     for (uint32_t i = begin; i < end; ++i) out_.order[i] = prims_[i].id;
@@ -329,11 +327,10 @@ class Builder {
       const Vec3f e = cbox.extent();
       const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
       mid = begin + n / 2;
-      std::nth_element(prims_ + begin, prims_ + mid, prims_ + end,
-                       [&](const Prim& a, const Prim& b) {
-                         const float ca = a.centroid(axis), cb = b.centroid(axis);
-                         return ca < cb || (ca == cb && a.id < b.id);
-                       });
+      std::nth_element(prims_ + begin, prims_ + mid, prims_ + end, [&](const Prim& a, const Prim& b) {
+        const float ca = a.centroid(axis), cb = b.centroid(axis);
+        return ca < cb || (ca == cb && a.id < b.id);
+      });
       left_box = range_box(begin, mid, false, depth);
       right_box = range_box(mid, end, false, depth);
     }

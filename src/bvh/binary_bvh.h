@@ -26,8 +26,8 @@ struct SahConfig {
   uint32_t leaf_block = 4;      // leaf cost = ceil(n / leaf_block): SIMD kernels test blocks of triangles
   float traversal_cost = 1.0f;  // cost of one node visit, in units of one leaf block
   int bins = 32;
-  uint32_t task_threshold = 512;   // ranges at least this large are built as OpenMP tasks
-  int max_sah_depth = 64;          // deeper than this, object-median splits (bounds the tree depth)
+  uint32_t task_threshold = 512;  // ranges at least this large are built as OpenMP tasks
+  int max_sah_depth = 64;         // deeper than this, object-median splits (bounds the tree depth)
 };
 
 struct BinaryBvh {

@@ -34,8 +34,7 @@ const BvhTraversal& bvh_traversal(Isa isa, int width) {
 }
 
 const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf) {
-  if (!isa_supported(isa))
-    throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
+  if (!isa_supported(isa)) throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
   const BvhTraversal* k = nullptr;
   switch (isa) {
     case Isa::avx512: k = avx512::bvh_traversal(width, direct_leaf); break;

@@ -24,9 +24,9 @@ struct BvhTraversal {
   // rays are not read), traversed as one packet: each hits[k] is overwritten with what closest()
   // gives from a miss (a miss for a ray BvhAccelerator would reject: NaN or infinite origin or direction, NaN
   // tmin or tmax). Null when the ISA has no packets.
-  void (*closest_packet)(const BvhArrays& bvh, const TriangleArrays& tris,
-                         const TriangleKernels& kernels, const Ray* rays, Hit* hits, unsigned active);
-  int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
+  void (*closest_packet)(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                         const Ray* rays, Hit* hits, unsigned active);
+  int packet_width;          // rays per packet (16 AVX-512, 8 AVX2, 0 none)
   bool direct_leaf = false;  // closest() calls the float `mt` leaf kernel directly (default_direct_leaf)
 };
 
@@ -59,8 +59,14 @@ bool default_direct_leaf(Isa isa, std::string_view vendor);
 const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf);
 const BvhTraversal& bvh_traversal(Isa isa, int width);
 
-namespace scalar { const BvhTraversal* bvh_traversal(int width, bool direct_leaf); }
-namespace avx2 { const BvhTraversal* bvh_traversal(int width, bool direct_leaf); }
-namespace avx512 { const BvhTraversal* bvh_traversal(int width, bool direct_leaf); }
+namespace scalar {
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf);
+}
+namespace avx2 {
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf);
+}
+namespace avx512 {
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf);
+}
 
 }  // namespace rayvec

@@ -19,10 +19,18 @@ constexpr Isa kThisIsa = Isa::avx2;
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhTraversal k8{Isa::avx2, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
-                              &bvh_closest_packet<BoxLanes8, PacketLanes8>, 8};
-constinit const BvhTraversal k16{Isa::avx2, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>,
-                               &bvh_closest_packet<BoxLanes16, PacketLanes8>, 8};
+constinit const BvhTraversal k8{Isa::avx2,
+                                8,
+                                &bvh_closest<BoxLanes8>,
+                                &bvh_occluded<BoxLanes8>,
+                                &bvh_closest_packet<BoxLanes8, PacketLanes8>,
+                                8};
+constinit const BvhTraversal k16{Isa::avx2,
+                                 16,
+                                 &bvh_closest<BoxLanes16>,
+                                 &bvh_occluded<BoxLanes16>,
+                                 &bvh_closest_packet<BoxLanes16, PacketLanes8>,
+                                 8};
 }  // namespace
 
 const BvhTraversal* bvh_traversal(int width, bool /*direct_leaf: AVX-512 only*/) {

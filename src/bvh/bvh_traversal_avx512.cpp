@@ -26,22 +26,40 @@ struct DirectMtLeaf {
   static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
                                     uint32_t end, const Ray& ray, Hit& hit) {
     if (k.intersector != Intersector::mt || k.isa != kThisIsa) return k.closest(tris, begin, end, ray, hit);
-    if (ray.tmin == 0.0f) closest_mt_float_rays<vfloat, true, 1>(tris, begin, end, &ray, &hit);
-    else closest_mt_float_rays<vfloat, false, 1>(tris, begin, end, &ray, &hit);
+    if (ray.tmin == 0.0f)
+      closest_mt_float_rays<vfloat, true, 1>(tris, begin, end, &ray, &hit);
+    else
+      closest_mt_float_rays<vfloat, false, 1>(tris, begin, end, &ray, &hit);
   }
 };
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhTraversal k8{Isa::avx512, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
-                              &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16};
-constinit const BvhTraversal k16{Isa::avx512, 16, &bvh_closest<BoxLanes16>, &bvh_occluded<BoxLanes16>,
-                               &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16};
-constinit const BvhTraversal k8_direct{Isa::avx512, 8, &bvh_closest<BoxLanes8, DirectMtLeaf>,
-                                     &bvh_occluded<BoxLanes8>,
-                                     &bvh_closest_packet<BoxLanes8, PacketLanes16>, 16, true};
-constinit const BvhTraversal k16_direct{Isa::avx512, 16, &bvh_closest<BoxLanes16, DirectMtLeaf>,
-                                      &bvh_occluded<BoxLanes16>,
-                                      &bvh_closest_packet<BoxLanes16, PacketLanes16>, 16, true};
+constinit const BvhTraversal k8{Isa::avx512,
+                                8,
+                                &bvh_closest<BoxLanes8>,
+                                &bvh_occluded<BoxLanes8>,
+                                &bvh_closest_packet<BoxLanes8, PacketLanes16>,
+                                16};
+constinit const BvhTraversal k16{Isa::avx512,
+                                 16,
+                                 &bvh_closest<BoxLanes16>,
+                                 &bvh_occluded<BoxLanes16>,
+                                 &bvh_closest_packet<BoxLanes16, PacketLanes16>,
+                                 16};
+constinit const BvhTraversal k8_direct{Isa::avx512,
+                                       8,
+                                       &bvh_closest<BoxLanes8, DirectMtLeaf>,
+                                       &bvh_occluded<BoxLanes8>,
+                                       &bvh_closest_packet<BoxLanes8, PacketLanes16>,
+                                       16,
+                                       true};
+constinit const BvhTraversal k16_direct{Isa::avx512,
+                                        16,
+                                        &bvh_closest<BoxLanes16, DirectMtLeaf>,
+                                        &bvh_occluded<BoxLanes16>,
+                                        &bvh_closest_packet<BoxLanes16, PacketLanes16>,
+                                        16,
+                                        true};
 }  // namespace
 
 const BvhTraversal* bvh_traversal(int width, bool direct_leaf) {

@@ -12,9 +12,9 @@ namespace rayvec::scalar {
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
 constinit const BvhTraversal k4{Isa::scalar, 4, &bvh_closest<BoxLanes4>, &bvh_occluded<BoxLanes4>,
-                              nullptr, 0};
+                                nullptr,     0};
 constinit const BvhTraversal k8{Isa::scalar, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
-                              nullptr, 0};
+                                nullptr,     0};
 }  // namespace
 
 const BvhTraversal* bvh_traversal(int width, bool /*direct_leaf: AVX-512 only*/) {

@@ -45,9 +45,8 @@ struct MtTriangleBroadcast {
 // hit (equal t: lower id). TminZero: every lane in `lanes` has tmin == 0. Returns the lanes whose
 // hit changed.
 template <class V, bool TminZero>
-unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end,
-                           const MtPacketRays<V>& q, unsigned lanes, float* limit, float* initial,
-                           Hit* hits) {
+unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, const MtPacketRays<V>& q,
+                           unsigned lanes, float* limit, float* initial, Hit* hits) {
   constexpr int P = V::W;
   const typename V::Mask active = mask_from_bits(V{}, lanes);
   const V zero = V::broadcast(0.0f), widen = V::broadcast(kMtWiden);
@@ -59,8 +58,10 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   // the exact tests and the update of one step that passed the pre-test
   auto step = [&](MtNumerators<V> c, uint32_t i) __attribute__((always_inline)) {
     c.mask = active & mt_edges(c) & (c.tn < hi * c.adet);
-    if constexpr (TminZero) c.mask = c.mask & (c.tn >= zero);
-    else c.mask = c.mask & (c.tn >= q.lo * c.adet);
+    if constexpr (TminZero)
+      c.mask = c.mask & (c.tn >= zero);
+    else
+      c.mask = c.mask & (c.tn >= q.lo * c.adet);
     if (!any(c.mask)) return;
     // the exact depth test of mt_closest_step, per lane
     const V t = c.tn / c.adet;

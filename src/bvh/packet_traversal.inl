@@ -216,8 +216,8 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
 // becomes its closest hit (a miss for an untraceable ray: NaN or infinite origin or direction, NaN
 // tmin or tmax, as bvh.cpp's single rays).
 template <class B, class PK>
-void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
-                        const TriangleKernels& kernels, const Ray* rays, Hit* hits, unsigned active) {
+void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
+                        const Ray* rays, Hit* hits, unsigned active) {
   constexpr int P = PK::P;
   static_assert(vfloat::W == P, "the packet leaf kernel has one ray per vfloat lane");
   static_assert(sizeof(Ray) == 8 * sizeof(float), "PK::load_rays reads a Ray as 8 floats");
@@ -260,25 +260,27 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris,
     const float* const hi = root_hi;
     const vfloat o[3] = {vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2])};
     const vfloat r[3] = {vfloat::load(rd[0]), vfloat::load(rd[1]), vfloat::load(rd[2])};
-    active = packet_box_lanes(lo, hi, o, r, vfloat::load(soa[6]), vfloat::load(soa[7]),
-                              bvh.box_epsilon, active);
+    active =
+        packet_box_lanes(lo, hi, o, r, vfloat::load(soa[6]), vfloat::load(soa[7]), bvh.box_epsilon, active);
     if (active == 0) return;
   }
 
   // The leaf kernel: 0 ray by ray, 1 packet kernel with every tmin = 0, 2 packet kernel, no tmin = 0.
   int leaf_mode = 0;
   if (kernels.intersector == Intersector::mt && kernels.isa == kThisIsa) {
-    if ((tmin_zero & active) == active) leaf_mode = 1;
-    else if ((tmin_zero & active) == 0) leaf_mode = 2;
+    if ((tmin_zero & active) == active)
+      leaf_mode = 1;
+    else if ((tmin_zero & active) == 0)
+      leaf_mode = 2;
   }
   alignas(64) float initial[P], lo[P];
   for (int k = 0; k < P; ++k) {
     initial[k] = next_up(tmax[k]);
     lo[k] = leaf_mode == 2 ? mt_lower(soa[6][k]) : 0.0f;
   }
-  const MtPacketRays<vfloat> q{{vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2]),
-                                dx, dy, dz, vfloat::load(soa[6])},
-                               vfloat::load(lo)};
+  const MtPacketRays<vfloat> q{
+      {vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2]), dx, dy, dz, vfloat::load(soa[6])},
+      vfloat::load(lo)};
 
   const PacketRun run{tmax, initial, leaf_mode, q};
   // The forward test (PK::Forward) when every lane has tmin >= 0 and no slab product can overflow:

@@ -67,8 +67,10 @@ RAYVEC_INLINE RayBoxes<B, Forward> ray_boxes(const Ray& ray, float eps) {
     rdir[a] = 1.0f / d[a];  // ±0 gives ±inf with the sign of the zero
     near[a] = __builtin_signbit(d[a]) ? a + 3 : a;
   }
-  if constexpr (Forward) return {B::prepare_forward(o, rdir, near, eps)};
-  else return {B::prepare(o, rdir, near), eps};
+  if constexpr (Forward)
+    return {B::prepare_forward(o, rdir, near, eps)};
+  else
+    return {B::prepare(o, rdir, near), eps};
 }
 
 RAYVEC_INLINE uint32_t leaf_begin(uint32_t ref) { return (ref >> 5) & (kMaxLeafBegin - 1); }
@@ -149,8 +151,10 @@ template <class B, class Leaf = TableLeaf>
 RAYVEC_INLINE void bvh_closest_from(const BvhArrays& bvh, const TriangleArrays& tris,
                                     const TriangleKernels& kernels, const Ray& ray, Hit& hit,
                                     uint32_t start) {
-  if (ray.tmin >= 0.0f) bvh_closest_impl<B, true, Leaf>(bvh, tris, kernels, ray, hit, start);
-  else bvh_closest_impl<B, false, Leaf>(bvh, tris, kernels, ray, hit, start);
+  if (ray.tmin >= 0.0f)
+    bvh_closest_impl<B, true, Leaf>(bvh, tris, kernels, ray, hit, start);
+  else
+    bvh_closest_impl<B, false, Leaf>(bvh, tris, kernels, ray, hit, start);
 }
 
 template <class B, class Leaf = TableLeaf>
@@ -178,8 +182,7 @@ bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const T
       unsigned mask = boxes.hits(node.bounds, ray.tmin, ray.tmax, dist);
       if (mask != 0) {
         ref = node.ref[__builtin_ctz(mask)];
-        for (mask &= mask - 1; mask != 0; mask &= mask - 1)
-          stack[sp++] = node.ref[__builtin_ctz(mask)];
+        for (mask &= mask - 1; mask != 0; mask &= mask - 1) stack[sp++] = node.ref[__builtin_ctz(mask)];
         continue;
       }
     } else if (ref != kEmptyRef) {

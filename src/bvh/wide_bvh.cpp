@@ -205,8 +205,8 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule) {
     default: throw std::invalid_argument("BVH width must be 4, 8 or 16");
   }
   storage_ = std::move(p);
-  arrays_ = BvhArrays{storage_.get(), uint32_t(width), count, depth_ * uint32_t(width - 1) + 1,
-                      kDefaultBoxEpsilon, {}, {}};
+  arrays_ = BvhArrays{
+      storage_.get(), uint32_t(width), count, depth_ * uint32_t(width - 1) + 1, kDefaultBoxEpsilon, {}, {}};
   switch (width) {
     case 4: root_box<4>(arrays_); break;
     case 8: root_box<8>(arrays_); break;

@@ -33,11 +33,11 @@ struct alignas(64) WideNode {
 
 // What the traversal kernels see. Node 0 is the root (an empty mesh has a root with no children).
 struct BvhArrays {
-  const void* nodes;     // WideNode<width>[node_count]
+  const void* nodes;  // WideNode<width>[node_count]
   uint32_t width;
   uint32_t node_count;
-  uint32_t stack_size;   // entries a traversal stack needs: depth · (width − 1) + 1, never exceeded
-  float box_epsilon;     // relative widening of ray–box intervals (kDefaultBoxEpsilon)
+  uint32_t stack_size;  // entries a traversal stack needs: depth · (width − 1) + 1, never exceeded
+  float box_epsilon;    // relative widening of ray–box intervals (kDefaultBoxEpsilon)
   // the union of the root's child boxes, the bounds of the whole tree (lo = +inf, hi = −inf when
   // there are none): the packets' first test (packet_traversal.inl)
   float root_lo[3], root_hi[3];

@@ -17,9 +17,8 @@ float colour(const Image& image, int x, int y, int c) {
 
 ImageDifference compare_images(const Image& a, const Image& b, double pixel_threshold) {
   if (a.width != b.width || a.height != b.height)
-    throw InputError("images differ in size: " + std::to_string(a.width) + "x" +
-                     std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
-                     std::to_string(b.height));
+    throw InputError("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                     " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
   ImageDifference d;
   d.pixels = long(a.width) * a.height;
   double sum_sq = 0;

@@ -5,9 +5,9 @@
 namespace rayvec {
 
 struct ImageDifference {
-  double rmse = 0;        // root mean square of every colour channel's difference
-  double psnr = 0;        // 20·log10(1 / rmse) in dB (peak 1.0); +inf for identical images
-  double max_error = 0;   // largest absolute difference of any colour channel of any pixel
+  double rmse = 0;          // root mean square of every colour channel's difference
+  double psnr = 0;          // 20·log10(1 / rmse) in dB (peak 1.0); +inf for identical images
+  double max_error = 0;     // largest absolute difference of any colour channel of any pixel
   long over_threshold = 0;  // pixels whose largest channel difference exceeds the threshold
   long pixels = 0;
 };

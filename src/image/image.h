@@ -15,7 +15,9 @@ struct Image {
 
   Image() = default;
   Image(int w, int h, std::vector<std::string> names)
-      : width(w), height(h), channels(std::move(names)),
+      : width(w),
+        height(h),
+        channels(std::move(names)),
         pixels(std::size_t(w) * std::size_t(h) * channels.size(), 0.0f) {}
 
   int nchannels() const { return static_cast<int>(channels.size()); }

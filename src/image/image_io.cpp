@@ -46,9 +46,7 @@ float srgb_encode(float x) {
   return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
-float srgb_decode(float x) {
-  return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-}
+float srgb_decode(float x) { return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f); }
 
 bool is_writable_image_path(const std::string& path) {
   const std::string ext = lower_extension(path);
@@ -106,9 +104,9 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
 Image read_image(const std::string& path) {
   std::error_code ec;  // not the throwing form: a name too long for the file system is bad input
   if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(path, 0, ec && ec != std::errc::no_such_file_or_directory
-                                  ? "cannot read image: " + ec.message()
-                                  : std::string("no such image file"));
+    throw InputError(path, 0,
+                     ec && ec != std::errc::no_such_file_or_directory ? "cannot read image: " + ec.message()
+                                                                      : std::string("no such image file"));
   std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
   if (!in) throw InputError(path, 0, "cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();

@@ -58,8 +58,7 @@ void AtomicFile::commit() {
   const bool write_ok = std::fflush(file_) == 0 && !std::ferror(file_);
   const bool close_ok = std::fclose(file_) == 0;
   file_ = nullptr;
-  if (!write_ok || !close_ok)
-    throw RuntimeError("cannot write " + path_ + ": " + std::strerror(errno));
+  if (!write_ok || !close_ok) throw RuntimeError("cannot write " + path_ + ": " + std::strerror(errno));
   if (std::rename(temp_.c_str(), path_.c_str()) != 0)
     throw RuntimeError("cannot rename " + temp_ + " to " + path_ + ": " + std::strerror(errno));
   unregister_temp(temp_.c_str());

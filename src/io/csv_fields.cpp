@@ -20,8 +20,7 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-[[noreturn]] void bad_field(std::string_view field, std::size_t k, const CsvPlace& where,
-                            const char* what) {
+[[noreturn]] void bad_field(std::string_view field, std::size_t k, const CsvPlace& where, const char* what) {
   throw InputError(where.file, where.line,
                    "field " + std::to_string(k + 1) + " '" + printable(field) + "' " + what);
 }
@@ -48,13 +47,11 @@ void parse_fields_as(std::string_view line, T* out, std::size_t n, const CsvPlac
       digits.remove_prefix(1);
     T value{};
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (end != digits.data() + digits.size() ||
-        (ec != std::errc() && ec != std::errc::result_out_of_range))
+    if (end != digits.data() + digits.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
       bad_field(field, k, where, "is not a number");
     if (ec == std::errc::result_out_of_range) {
       const double wide = parse_out_of_range(digits);
-      if (std::isinf(wide) || std::isinf(static_cast<T>(wide)))
-        bad_field(field, k, where, "is out of range");
+      if (std::isinf(wide) || std::isinf(static_cast<T>(wide))) bad_field(field, k, where, "is out of range");
       value = static_cast<T>(wide);
     }
     out[k++] = value;

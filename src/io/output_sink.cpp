@@ -13,8 +13,8 @@ OutputSink::OutputSink(const std::string& path) : path_(path.empty() ? "-" : pat
 
 void OutputSink::write(const char* data, std::size_t n) {
   if (n && std::fwrite(data, 1, n, stream()) != n)
-    throw RuntimeError("cannot write " + std::string(is_stdout() ? "standard output" : path_) +
-                       ": " + std::strerror(errno));
+    throw RuntimeError("cannot write " + std::string(is_stdout() ? "standard output" : path_) + ": " +
+                       std::strerror(errno));
 }
 
 void OutputSink::commit() {

@@ -36,9 +36,10 @@ void validate(const float* f, std::size_t n, const CsvPlace& where) {
     throw InputError(where.file, where.line, "direction is zero (dx = dy = dz = 0)");
   if (n == 8) {
     if (std::isnan(f[6]) || std::isnan(f[7]))
-      throw InputError(where.file, where.line, std::string(std::isnan(f[6]) ? "tmin" : "tmax") +
-                                                   " is NaN (tmin and tmax must be numbers; "
-                                                   "tmax may be inf)");
+      throw InputError(where.file, where.line,
+                       std::string(std::isnan(f[6]) ? "tmin" : "tmax") +
+                           " is NaN (tmin and tmax must be numbers; "
+                           "tmax may be inf)");
     if (f[6] > f[7])
       throw InputError(where.file, where.line,
                        "tmin (" + show(f[6]) + ") is greater than tmax (" + show(f[7]) + ")");

@@ -13,9 +13,9 @@ namespace {
 void expect_three(std::string_view line, const CsvPlace& where, const char* what) {
   const std::size_t n = count_fields(line);
   if (n != 3)
-    throw InputError(where.file, where.line,
-                     "found " + std::to_string(n) + (n == 1 ? " field" : " fields") +
-                         ", expected 3 (" + what + ")");
+    throw InputError(
+        where.file, where.line,
+        "found " + std::to_string(n) + (n == 1 ? " field" : " fields") + ", expected 3 (" + what + ")");
 }
 
 std::string show(double x) {
@@ -61,11 +61,10 @@ std::vector<std::array<uint32_t, 3>> parse_faces_csv(std::string_view text, cons
         throw InputError(name, where.line, field + " is not an integer vertex index");
       if (f[k] < 0) throw InputError(name, where.line, field + " is a negative vertex index");
       if (!(f[k] < static_cast<double>(vertex_count)))
-        throw InputError(name, where.line,
-                         field + " is out of range: the vertex file has " +
-                             std::to_string(vertex_count) + " rows" +
-                             (vertex_count ? " (indices 0 to " + std::to_string(vertex_count - 1) + ")"
-                                           : std::string()));
+        throw InputError(
+            name, where.line,
+            field + " is out of range: the vertex file has " + std::to_string(vertex_count) + " rows" +
+                (vertex_count ? " (indices 0 to " + std::to_string(vertex_count - 1) + ")" : std::string()));
       face[k] = static_cast<uint32_t>(f[k]);
     }
     faces.push_back(face);

@@ -2,8 +2,8 @@
 
 namespace rayvec {
 
-void closest_batch(const TriangleKernels& kernels, const TriangleArrays& tris, uint32_t begin,
-                   uint32_t end, const Ray* rays, Hit* hits, std::size_t n) {
+void closest_batch(const TriangleKernels& kernels, const TriangleArrays& tris, uint32_t begin, uint32_t end,
+                   const Ray* rays, Hit* hits, std::size_t n) {
   for (uint32_t chunk = begin; chunk < end;) {
     const uint32_t chunk_end = end - chunk > kTriangleChunk ? chunk + kTriangleChunk : end;
     std::size_t k = 0;

@@ -26,7 +26,7 @@ inline constexpr uint32_t kTriangleChunk = 8192;
 // For k in [0, n): hits[k] becomes the closest hit of rays[k] among slots [begin, end), exactly as
 // kernels.closest would return it (each hits[k] must be a miss or a previous result for that ray;
 // chunks go in increasing slot order, so ties still go to the lowest id).
-void closest_batch(const TriangleKernels& kernels, const TriangleArrays& tris, uint32_t begin,
-                   uint32_t end, const Ray* rays, Hit* hits, std::size_t n);
+void closest_batch(const TriangleKernels& kernels, const TriangleArrays& tris, uint32_t begin, uint32_t end,
+                   const Ray* rays, Hit* hits, std::size_t n);
 
 }  // namespace rayvec

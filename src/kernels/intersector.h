@@ -50,9 +50,8 @@ enum class Intersector {
   watertight64,
 };
 
-inline constexpr Intersector kAllIntersectors[] = {Intersector::paper, Intersector::mt,
-                                                   Intersector::mt64, Intersector::watertight,
-                                                   Intersector::watertight64};
+inline constexpr Intersector kAllIntersectors[] = {Intersector::paper, Intersector::mt, Intersector::mt64,
+                                                   Intersector::watertight, Intersector::watertight64};
 
 const char* intersector_name(Intersector i);
 std::optional<Intersector> parse_intersector(std::string_view name);

@@ -109,11 +109,19 @@ RAYVEC_INLINE LaneHits<V> test_mt(const TriangleArrays& T, uint32_t i, const Ray
   const V v0x = V::load(T.v0x + k), v0y = V::load(T.v0y + k), v0z = V::load(T.v0z + k);
   V e1x, e1y, e1z, e2x, e2y, e2z;
   if constexpr (sizeof(S) == 8) {  // double: edges from the exact vertices
-    e1x = V::load(T.v1x + k) - v0x; e1y = V::load(T.v1y + k) - v0y; e1z = V::load(T.v1z + k) - v0z;
-    e2x = V::load(T.v2x + k) - v0x; e2y = V::load(T.v2y + k) - v0y; e2z = V::load(T.v2z + k) - v0z;
+    e1x = V::load(T.v1x + k) - v0x;
+    e1y = V::load(T.v1y + k) - v0y;
+    e1z = V::load(T.v1z + k) - v0z;
+    e2x = V::load(T.v2x + k) - v0x;
+    e2y = V::load(T.v2y + k) - v0y;
+    e2z = V::load(T.v2z + k) - v0z;
   } else {
-    e1x = V::load(T.e1x + k); e1y = V::load(T.e1y + k); e1z = V::load(T.e1z + k);
-    e2x = V::load(T.e2x + k); e2y = V::load(T.e2y + k); e2z = V::load(T.e2z + k);
+    e1x = V::load(T.e1x + k);
+    e1y = V::load(T.e1y + k);
+    e1z = V::load(T.e1z + k);
+    e2x = V::load(T.e2x + k);
+    e2y = V::load(T.e2y + k);
+    e2z = V::load(T.e2z + k);
   }
   // h = d × e2, det = e1 · h
   const V hx = fmsub(r.dy, e2z, r.dz * e2y);
@@ -146,8 +154,10 @@ RAYVEC_INLINE LaneHits<V> test_mt(const TriangleArrays& T, uint32_t i, const Ray
 template <class V, Intersector I>
 RAYVEC_INLINE LaneHits<V> test_lanes(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
                                      typename V::Mask active, V tlimit) {
-  if constexpr (I == Intersector::paper) return test_paper<V>(T, i, r, active, tlimit);
-  else return test_mt<V>(T, i, r, active, tlimit);
+  if constexpr (I == Intersector::paper)
+    return test_paper<V>(T, i, r, active, tlimit);
+  else
+    return test_mt<V>(T, i, r, active, tlimit);
 }
 
 template <class V, Intersector I>
@@ -175,7 +185,10 @@ void closest_impl(const TriangleArrays& T, uint32_t begin, uint32_t end, const R
   // final lane reduction: nearest t, then lowest id
   S ts[W], us[W], vs[W];
   int64_t idx[W];
-  best_t.store(ts); best_u.store(us); best_v.store(vs); best_idx.store_index(idx);
+  best_t.store(ts);
+  best_u.store(us);
+  best_v.store(vs);
+  best_idx.store_index(idx);
   int k_best = -1;
   for (int k = 0; k < W; ++k) {
     if (!(ts[k] < initial)) continue;
@@ -277,8 +290,8 @@ RAYVEC_INLINE typename V::Mask mt_edges(const MtNumerators<V>& c) {
 // tn < hi·|det|, but NOT the lower one (tmin), which the callers add (mt_numerators; the packet
 // kernel per lane). |det| = 0 fails the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN).
 template <class V, class At>
-RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const At& at,
-                                                 const RayLanes<V>& r, typename V::Mask active, V hi) {
+RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const At& at, const RayLanes<V>& r,
+                                                 typename V::Mask active, V hi) {
   MtNumerators<V> out = mt_numerator_values<V>(T, at, r);
   out.mask = active & mt_edges(out) & (out.tn < hi * out.adet);
   return out;
@@ -294,8 +307,8 @@ RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const 
 // lanes and |det| = 0 may pass too, so the caller must repeat the ordered tests on the rare steps
 // where a lane passes (mt_closest_step). neg_lo = −lo (unused when TminZero).
 template <class V, bool TminZero>
-RAYVEC_INLINE typename V::Mask mt_sign_pretest(const MtNumerators<V>& c, typename V::Mask active,
-                                                V neg_lo, V hi) {
+RAYVEC_INLINE typename V::Mask mt_sign_pretest(const MtNumerators<V>& c, typename V::Mask active, V neg_lo,
+                                               V hi) {
   const V zero = V::broadcast(0.0f);
   const V u = zero - c.un, v = c.vn + zero;
   const V w = c.adet - (u + v);
@@ -304,14 +317,14 @@ RAYVEC_INLINE typename V::Mask mt_sign_pretest(const MtNumerators<V>& c, typenam
   return active & sign_clear(or3(or3(u, v, w), low, nearer));
 }
 
-
-
 template <class V, bool TminZero>
 RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
                                             typename V::Mask active, V lo, V hi) {
   MtNumerators<V> out = mt_numerators_core<V>(T, MtTriangleLanes<V>{i}, r, active, hi);
-  if constexpr (TminZero) out.mask = out.mask & (out.tn >= V::broadcast(0.0f));  // no multiply for tmin = 0
-  else out.mask = out.mask & (out.tn >= lo * out.adet);
+  if constexpr (TminZero)
+    out.mask = out.mask & (out.tn >= V::broadcast(0.0f));  // no multiply for tmin = 0
+  else
+    out.mask = out.mask & (out.tn >= lo * out.adet);
   return out;
 }
 
@@ -344,8 +357,7 @@ RAYVEC_INLINE void mt_closest_step(const TriangleArrays& T, uint32_t i, const Ra
   // the ordered tests (NaN and |det| = 0 fail them) and the exact depth test, only for steps where
   // a lane may be nearer; ties go to the lower id later
   const V t = c.tn / c.adet;
-  const typename V::Mask m = pre & mt_edges(c) & (c.adet > V::broadcast(0.0f)) & (t >= r.tmin) &
-                             (t < b.t);
+  const typename V::Mask m = pre & mt_edges(c) & (c.adet > V::broadcast(0.0f)) & (t >= r.tmin) & (t < b.t);
   if (!any(m)) return;
   b.t = select(m, b.t, t);
   b.un = select(m, b.un, c.un);
@@ -368,7 +380,10 @@ RAYVEC_INLINE void mt_finish(const TriangleArrays& T, const MtBest<V>& b, float 
   if (!(t < initial)) return;
   float us[W], vs[W], as[W];
   int64_t idx[W];
-  b.un.store(us); b.vn.store(vs); b.adet.store(as); b.idx.store_index(idx);
+  b.un.store(us);
+  b.vn.store(vs);
+  b.adet.store(as);
+  b.idx.store_index(idx);
   unsigned nearest = bits(b.t <= V::broadcast(t));
   int k_best = __builtin_ctz(nearest);
   for (nearest &= nearest - 1; nearest != 0; nearest &= nearest - 1) {  // a tie: the lowest id
@@ -394,9 +409,9 @@ RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
   const float limit = ray.tmax < hit.t ? ray.tmax : hit.t;
   const float initial = next_up(limit);
   const V zero = V::broadcast(0.0f);
-  return MtRay<V>{broadcast_ray<V>(ray), V::broadcast(mt_lower(ray.tmin)), initial,
-                  MtBest<V>{V::broadcast(initial), V::broadcast(initial * kMtWiden), zero, zero,
-                            zero, zero, false}};
+  return MtRay<V>{
+      broadcast_ray<V>(ray), V::broadcast(mt_lower(ray.tmin)), initial,
+      MtBest<V>{V::broadcast(initial), V::broadcast(initial * kMtWiden), zero, zero, zero, zero, false}};
 }
 
 // R rays (1 or 2) against [begin, end): each triangle step is loaded once for all R rays.
@@ -431,8 +446,10 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
 template <class V>
 void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
   if (!finite_ray(ray)) return;
-  if (ray.tmin == 0.0f) closest_mt_float_rays<V, true, 1>(T, begin, end, &ray, &hit);
-  else closest_mt_float_rays<V, false, 1>(T, begin, end, &ray, &hit);
+  if (ray.tmin == 0.0f)
+    closest_mt_float_rays<V, true, 1>(T, begin, end, &ray, &hit);
+  else
+    closest_mt_float_rays<V, false, 1>(T, begin, end, &ray, &hit);
 }
 
 template <class V>
@@ -474,8 +491,8 @@ bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, co
 template <class V, Intersector I>
 constexpr TriangleKernels make_kernels(Isa isa) {
   if constexpr (I == Intersector::mt && sizeof(typename V::Scalar) == 4)
-    return TriangleKernels{isa, I, V::W, &closest_mt_float<V>, &occluded_mt_float<V>,
-                           &closest_pair_mt_float<V>};
+    return TriangleKernels{
+        isa, I, V::W, &closest_mt_float<V>, &occluded_mt_float<V>, &closest_pair_mt_float<V>};
   else
     return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
 }

@@ -8,8 +8,7 @@
 namespace rayvec {
 
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector) {
-  if (!isa_supported(isa))
-    throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
+  if (!isa_supported(isa)) throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
   switch (isa) {
     case Isa::avx512: return avx512::triangle_kernels(intersector);
     case Isa::avx2: return avx2::triangle_kernels(intersector);

@@ -47,8 +47,14 @@ struct TriangleKernels {
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector);
 
 // Per-ISA entry points, each defined in its own unit (triangle_kernels_<isa>.cpp).
-namespace scalar { const TriangleKernels& triangle_kernels(Intersector intersector); }
-namespace avx2 { const TriangleKernels& triangle_kernels(Intersector intersector); }
-namespace avx512 { const TriangleKernels& triangle_kernels(Intersector intersector); }
+namespace scalar {
+const TriangleKernels& triangle_kernels(Intersector intersector);
+}
+namespace avx2 {
+const TriangleKernels& triangle_kernels(Intersector intersector);
+}
+namespace avx512 {
+const TriangleKernels& triangle_kernels(Intersector intersector);
+}
 
 }  // namespace rayvec

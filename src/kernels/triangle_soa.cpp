@@ -62,8 +62,6 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
                            row(kNg),     row(kNg + 1), row(kNg + 2), ids,          count_};
 }
 
-std::size_t TriangleSoA::bytes() const {
-  return std::size_t(padded_) * kSlotRows * 4;
-}
+std::size_t TriangleSoA::bytes() const { return std::size_t(padded_) * kSlotRows * 4; }
 
 }  // namespace rayvec

@@ -29,8 +29,8 @@ namespace rayvec {
 
 struct TriangleMesh;
 
-inline constexpr uint32_t kSlotBlock = 16;                    // slots per block
-inline constexpr uint32_t kSlotRows = 19;                     // 4-byte rows per block
+inline constexpr uint32_t kSlotBlock = 16;  // slots per block
+inline constexpr uint32_t kSlotRows = 19;   // 4-byte rows per block
 inline constexpr uint32_t kSlotBlockFloats = kSlotBlock * kSlotRows;
 // The rows the float `mt` kernels read (v0, ng, e2, e1) are rows 0..kMtRows−1 of a block, v0x first,
 // so a block's hot part is the kMtRows·64 bytes from its slot-0 v0x.

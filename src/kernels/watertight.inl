@@ -35,8 +35,8 @@ RAYVEC_INLINE V mul_rounded(V a, V b) {
 template <class V>
 struct WatertightRay {
   const float *ax, *ay, *az, *bx, *by, *bz, *cx, *cy, *cz;  // v0, v1, v2 permuted (kx, ky, kz)
-  V ox, oy, oz;   // origin, permuted
-  V sx, sy, sz;   // shear: Sx, Sy, Sz of the paper
+  V ox, oy, oz;                                             // origin, permuted
+  V sx, sy, sz;                                             // shear: Sx, Sy, Sz of the paper
   V tmin;
 };
 
@@ -50,17 +50,29 @@ RAYVEC_INLINE WatertightRay<V> watertight_ray(const TriangleArrays& T, const Ray
   int kz = ad[0] > ad[1] ? (ad[0] > ad[2] ? 0 : 2) : (ad[1] > ad[2] ? 1 : 2);
   int kx = kz == 2 ? 0 : kz + 1;
   int ky = kx == 2 ? 0 : kx + 1;
-  if (d[kz] < 0) { const int k = kx; kx = ky; ky = k; }
+  if (d[kz] < 0) {
+    const int k = kx;
+    kx = ky;
+    ky = k;
+  }
   const float* const v0[3] = {T.v0x, T.v0y, T.v0z};
   const float* const v1[3] = {T.v1x, T.v1y, T.v1z};
   const float* const v2[3] = {T.v2x, T.v2y, T.v2z};
   // shear constants, in the kernel's precision
   const S dz = S(d[kz]);
   WatertightRay<V> w;
-  w.ax = v0[kx]; w.ay = v0[ky]; w.az = v0[kz];
-  w.bx = v1[kx]; w.by = v1[ky]; w.bz = v1[kz];
-  w.cx = v2[kx]; w.cy = v2[ky]; w.cz = v2[kz];
-  w.ox = V::broadcast(S(o[kx])); w.oy = V::broadcast(S(o[ky])); w.oz = V::broadcast(S(o[kz]));
+  w.ax = v0[kx];
+  w.ay = v0[ky];
+  w.az = v0[kz];
+  w.bx = v1[kx];
+  w.by = v1[ky];
+  w.bz = v1[kz];
+  w.cx = v2[kx];
+  w.cy = v2[ky];
+  w.cz = v2[kz];
+  w.ox = V::broadcast(S(o[kx]));
+  w.oy = V::broadcast(S(o[ky]));
+  w.oz = V::broadcast(S(o[kz]));
   w.sx = V::broadcast(S(d[kx]) / dz);
   w.sy = V::broadcast(S(d[ky]) / dz);
   w.sz = V::broadcast(S(1) / dz);
@@ -72,13 +84,19 @@ RAYVEC_INLINE WatertightRay<V> watertight_ray(const TriangleArrays& T, const Ray
 // functions that are exactly 0 in float. Products of two floats are exact in double, so the double
 // difference has the exact sign.
 template <class V>
-RAYVEC_COLD void watertight_refine(unsigned lanes, V ax, V ay, V bx, V by, V cx, V cy,
-                                            V& u, V& v, V& w) {
+RAYVEC_COLD void watertight_refine(unsigned lanes, V ax, V ay, V bx, V by, V cx, V cy, V& u, V& v, V& w) {
   using S = typename V::Scalar;
   constexpr int W = V::W;
   S a_x[W], a_y[W], b_x[W], b_y[W], c_x[W], c_y[W], us[W], vs[W], ws[W];
-  ax.store(a_x); ay.store(a_y); bx.store(b_x); by.store(b_y); cx.store(c_x); cy.store(c_y);
-  u.store(us); v.store(vs); w.store(ws);
+  ax.store(a_x);
+  ay.store(a_y);
+  bx.store(b_x);
+  by.store(b_y);
+  cx.store(c_x);
+  cy.store(c_y);
+  u.store(us);
+  v.store(vs);
+  w.store(ws);
   for (; lanes != 0; lanes &= lanes - 1) {
     const int k = __builtin_ctz(lanes);
     const double Ax = a_x[k], Ay = a_y[k], Bx = b_x[k], By = b_y[k], Cx = c_x[k], Cy = c_y[k];
@@ -86,7 +104,9 @@ RAYVEC_COLD void watertight_refine(unsigned lanes, V ax, V ay, V bx, V by, V cx,
     vs[k] = S(Ax * Cy - Ay * Cx);
     ws[k] = S(Bx * Ay - By * Ax);
   }
-  u = V::load(us); v = V::load(vs); w = V::load(ws);
+  u = V::load(us);
+  v = V::load(vs);
+  w = V::load(ws);
 }
 
 // a·b == c·d exactly (a two-product comparison: equal rounded products and equal exact errors).
@@ -110,8 +130,8 @@ RAYVEC_COLD bool zero_area(const TriangleArrays& T, uint32_t j) {
 
 // The lanes of triangles [i, i + W) that the ray hits with tmin <= t < tlimit.
 template <class V>
-RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const WatertightRay<V>& r,
-                                          uint32_t i, typename V::Mask active, V tlimit) {
+RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const WatertightRay<V>& r, uint32_t i,
+                                          typename V::Mask active, V tlimit) {
   using S = typename V::Scalar;
   LaneHits<V> out;
   const uint32_t k = slot_offset(i);  // the step's lanes in each row (blocked rows)
@@ -132,20 +152,18 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
   // edge tests (closed): every edge function has the sign of det, i.e. not both signs present
   V det = u + v + w;
   V sign = sign_bit(det);
-  typename V::Mask pass = active & (xor_bits(u, sign) >= zero) & (xor_bits(v, sign) >= zero) &
-                          (xor_bits(w, sign) >= zero);
+  typename V::Mask pass =
+      active & (xor_bits(u, sign) >= zero) & (xor_bits(v, sign) >= zero) & (xor_bits(w, sign) >= zero);
   out.mask = pass;
   if (!any(pass)) return out;
   if constexpr (sizeof(S) == 4) {  // float: refine exact zeros in double (Woop et al. 2013, §3)
-    const unsigned zeros = bits(pass) & (bits((u <= zero) & (u >= zero)) |
-                                         bits((v <= zero) & (v >= zero)) |
+    const unsigned zeros = bits(pass) & (bits((u <= zero) & (u >= zero)) | bits((v <= zero) & (v >= zero)) |
                                          bits((w <= zero) & (w >= zero)));
     if (zeros != 0) {
       watertight_refine<V>(zeros, ax, ay, bx, by, cx, cy, u, v, w);
       det = u + v + w;
       sign = sign_bit(det);
-      pass = pass & (xor_bits(u, sign) >= zero) & (xor_bits(v, sign) >= zero) &
-             (xor_bits(w, sign) >= zero);
+      pass = pass & (xor_bits(u, sign) >= zero) & (xor_bits(v, sign) >= zero) & (xor_bits(w, sign) >= zero);
     }
   }
   // det != 0 and finite (ordered compares also drop NaN)
@@ -154,7 +172,8 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
   if (!any(out.mask)) return out;
   // depth test: t = (U·Az + V·Bz + W·Cz) / det with the scaled z
   const V tn = xor_bits(mul_rounded(u, mul_rounded(r.sz, az)) + mul_rounded(v, mul_rounded(r.sz, bz)) +
-                           mul_rounded(w, mul_rounded(r.sz, cz)), sign);
+                            mul_rounded(w, mul_rounded(r.sz, cz)),
+                        sign);
   out.t = tn / adet;
   out.mask = out.mask & (out.t >= r.tmin) & (out.t < tlimit);
   if (any(out.mask)) {
@@ -164,7 +183,10 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
     for (int k = 0; k < V::W; ++k) keep[k] = 1.0f;
     for (unsigned lanes = bits(out.mask); lanes != 0; lanes &= lanes - 1) {
       const int k = __builtin_ctz(lanes);
-      if (zero_area(T, i + unsigned(k))) { keep[k] = 0.0f; dropped = 1; }
+      if (zero_area(T, i + unsigned(k))) {
+        keep[k] = 0.0f;
+        dropped = 1;
+      }
     }
     if (dropped) out.mask = out.mask & (V::load(keep) > zero);
   }
@@ -176,8 +198,7 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
 }
 
 template <class V>
-void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
-                        Hit& hit) {
+void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
   using S = typename V::Scalar;
   constexpr int W = V::W;
   if (!finite_ray(ray)) return;
@@ -201,7 +222,10 @@ void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, c
   // final lane reduction: nearest t, then lowest id (as closest_impl in moller_trumbore.inl)
   S ts[W], us[W], vs[W];
   int64_t idx[W];
-  best_t.store(ts); best_u.store(us); best_v.store(vs); best_idx.store_index(idx);
+  best_t.store(ts);
+  best_u.store(us);
+  best_v.store(vs);
+  best_idx.store_index(idx);
   int k_best = -1;
   for (int k = 0; k < W; ++k) {
     if (!(ts[k] < initial)) continue;

@@ -32,8 +32,8 @@ CpuFeatures probe() {
   f.avx = c & (1u << 28);
   if (osxsave) {
     const unsigned long long xcr0 = read_xcr0();
-    f.os_ymm = (xcr0 & 0x6) == 0x6;      // SSE and AVX state
-    f.os_zmm = (xcr0 & 0xe6) == 0xe6;    // plus opmask, ZMM_Hi256, Hi16_ZMM
+    f.os_ymm = (xcr0 & 0x6) == 0x6;    // SSE and AVX state
+    f.os_zmm = (xcr0 & 0xe6) == 0xe6;  // plus opmask, ZMM_Hi256, Hi16_ZMM
   }
   if (max_leaf >= 7) {
     __get_cpuid_count(7, 0, &a, &b, &c, &d);
@@ -119,8 +119,8 @@ std::string resolve_isa(std::string_view name, Isa& out) {
   const auto isa = parse_isa(name);
   if (!isa) return "unknown ISA '" + std::string(name) + "' (choose auto, scalar, avx2 or avx512)";
   if (!isa_supported(*isa))
-    return "this CPU cannot run --isa " + std::string(name) + " (best available: " +
-           isa_name(best_isa()) + "; run `rayvec info` for details)";
+    return "this CPU cannot run --isa " + std::string(name) + " (best available: " + isa_name(best_isa()) +
+           "; run `rayvec info` for details)";
   out = *isa;
   return {};
 }

@@ -52,9 +52,14 @@ inline void RayBatch::reserve(std::size_t n) {
 }
 
 inline void RayBatch::push_back(const Ray& r) {
-  ox.push_back(r.org.x); oy.push_back(r.org.y); oz.push_back(r.org.z);
-  dx.push_back(r.dir.x); dy.push_back(r.dir.y); dz.push_back(r.dir.z);
-  tmin.push_back(r.tmin); tmax.push_back(r.tmax);
+  ox.push_back(r.org.x);
+  oy.push_back(r.org.y);
+  oz.push_back(r.org.z);
+  dx.push_back(r.dir.x);
+  dy.push_back(r.dir.y);
+  dz.push_back(r.dir.z);
+  tmin.push_back(r.tmin);
+  tmax.push_back(r.tmax);
 }
 
 }  // namespace rayvec

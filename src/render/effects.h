@@ -10,9 +10,9 @@
 namespace rayvec {
 
 struct EffectsPlan {
-  int shadow_lights = 0;          // lights with non-zero power (each may cast shadow rays)
-  int reflective_materials = 0;   // materials in use that reflect
-  int refractive_materials = 0;   // materials in use that refract
+  int shadow_lights = 0;         // lights with non-zero power (each may cast shadow rays)
+  int reflective_materials = 0;  // materials in use that reflect
+  int refractive_materials = 0;  // materials in use that refract
   // "effects: shadows (2 lights), reflection (2 materials), refraction: none"
   std::string describe() const;
 };

@@ -25,8 +25,8 @@ std::string RenderStats::text() const {
               (unsigned long long)rays.reflection, (unsigned long long)rays.refraction,
               (unsigned long long)rays.total());
   s += format("rays/s: %.4g (%d threads)\n", rays_per_second(), threads);
-  s += format("time: load %.3f s, build %.3f s, render %.3f s, write %.3f s\n", load_seconds,
-              build_seconds, render_seconds, write_seconds);
+  s += format("time: load %.3f s, build %.3f s, render %.3f s, write %.3f s\n", load_seconds, build_seconds,
+              render_seconds, write_seconds);
   s += format("render thread-time: primary rays %.3f s, shading + secondary rays %.3f s\n",
               primary_thread_seconds, shading_thread_seconds);
   return s;
@@ -39,10 +39,9 @@ std::string RenderStats::json() const {
       "  \"seconds\": {\"load\": %.6f, \"build\": %.6f, \"render\": %.6f, \"write\": %.6f, "
       "\"total\": %.6f, \"primary_thread\": %.6f, \"shading_thread\": %.6f},\n"
       "  \"rays_per_second\": %.6g,\n  \"threads\": %d\n}\n",
-      (unsigned long long)rays.primary, (unsigned long long)rays.shadow,
-      (unsigned long long)rays.reflection, (unsigned long long)rays.refraction,
-      (unsigned long long)rays.total(), load_seconds, build_seconds, render_seconds,
-      write_seconds, load_seconds + build_seconds + render_seconds + write_seconds,
+      (unsigned long long)rays.primary, (unsigned long long)rays.shadow, (unsigned long long)rays.reflection,
+      (unsigned long long)rays.refraction, (unsigned long long)rays.total(), load_seconds, build_seconds,
+      render_seconds, write_seconds, load_seconds + build_seconds + render_seconds + write_seconds,
       primary_thread_seconds, shading_thread_seconds, rays_per_second(), threads);
 }
 

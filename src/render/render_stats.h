@@ -10,7 +10,10 @@ struct RayCounts {
 
   uint64_t total() const { return primary + shadow + reflection + refraction; }
   RayCounts& operator+=(const RayCounts& o) {
-    primary += o.primary; shadow += o.shadow; reflection += o.reflection; refraction += o.refraction;
+    primary += o.primary;
+    shadow += o.shadow;
+    reflection += o.reflection;
+    refraction += o.refraction;
     return *this;
   }
 };
@@ -24,9 +27,7 @@ struct RenderStats {
   double primary_thread_seconds = 0, shading_thread_seconds = 0;
   int threads = 1;
 
-  double rays_per_second() const {
-    return render_seconds > 0 ? double(rays.total()) / render_seconds : 0.0;
-  }
+  double rays_per_second() const { return render_seconds > 0 ? double(rays.total()) / render_seconds : 0.0; }
   // Human-readable lines for --stats.
   std::string text() const;
   // {"rays": {"primary": n, "shadow": n, "reflection": n, "refraction": n, "total": n},

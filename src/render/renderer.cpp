@@ -19,8 +19,10 @@ constexpr int kTile = 16;
 // A 32-bit integer hash (Wellons' "lowbias32"): decorrelated jitter without a stateful RNG, so the
 // image does not depend on which thread renders which tile.
 uint32_t hash32(uint32_t x) {
-  x ^= x >> 16; x *= 0x7feb352dU;
-  x ^= x >> 15; x *= 0x846ca68bU;
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
   x ^= x >> 16;
   return x;
 }
@@ -49,8 +51,8 @@ std::pair<float, float> sample_position(int x, int y, int s, int n) {
   return {(float(s) + jx) / float(n), (float(row) + jy) / float(n)};
 }
 
-Image render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-             RenderStats& stats, const std::function<void(double)>& progress) {
+Image render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
+             const std::function<void(double)>& progress) {
   const Camera& cam = scene.camera;
   // Before any allocation: an absurd size or a framebuffer beyond free memory fails now, exit 2.
   check_render_budget(scene, static_cast<int>(channel_names(settings.aov).size()), available_memory_bytes());
@@ -102,7 +104,9 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
           if (settings.aov.depth) *px++ = h.hit() ? h.t * dot(batch[i].dir, camera.forward()) : kInf;
           if (settings.aov.normal) {
             const Vec3f nrm = h.hit() ? sp.ns : Vec3f{};
-            *px++ = nrm.x; *px++ = nrm.y; *px++ = nrm.z;
+            *px++ = nrm.x;
+            *px++ = nrm.y;
+            *px++ = nrm.z;
           }
           if (settings.aov.id) {
             *px++ = float(h.tri);
@@ -114,7 +118,9 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
       for (int i = 0; i < n; ++i) {
         const Vec3f c = sum[i] * (1.0f / float(spp));
         float* px = &image.at(x0 + i % w, y0 + i / w, 0);
-        px[0] = c.x; px[1] = c.y; px[2] = c.z;
+        px[0] = c.x;
+        px[1] = c.y;
+        px[2] = c.z;
       }
       const int finished = ++done;
       if (progress && omp_get_thread_num() == 0) progress(double(finished) / tiles);

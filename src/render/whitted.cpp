@@ -60,8 +60,7 @@ Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, 
   return sum;
 }
 
-Vec3f Whitted::shade(const Ray& ray, const Hit& hit, int depth, float weight,
-                     RayCounts& rays) const {
+Vec3f Whitted::shade(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const {
   if (!hit.hit()) return scene_.background;
   const SurfacePoint s = surface_point(scene_, ray, hit);
   const Material& m = scene_.materials[s.material];

@@ -23,8 +23,7 @@ class Whitted {
 
  private:
   Vec3f trace(const Ray& ray, int depth, float weight, RayCounts& rays) const;
-  Vec3f direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye,
-                     RayCounts& rays) const;
+  Vec3f direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye, RayCounts& rays) const;
   bool child_worthwhile(int depth, float weight) const;
 
   const Scene& scene_;

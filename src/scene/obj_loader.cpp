@@ -26,13 +26,13 @@ class MtlReader : public tinyobj::MaterialReader {
   explicit MtlReader(fs::path obj_dir) : obj_dir_(std::move(obj_dir)) {}
 
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
-                  std::map<std::string, int>* by_name, std::string* warn,
-                  std::string* err) override {
+                  std::map<std::string, int>* by_name, std::string* warn, std::string* err) override {
     const fs::path mtl = obj_dir_ / name;
     // Only regular files: a stranger's `mtllib /dev/zero` (or a FIFO) would read forever.
     std::error_code ec;
     if (fs::exists(mtl, ec) && !fs::is_regular_file(mtl, ec)) {
-      if (warn) *warn += "material file " + mtl.string() + " is not a regular file; using default materials\n";
+      if (warn)
+        *warn += "material file " + mtl.string() + " is not a regular file; using default materials\n";
       return false;
     }
     std::ifstream in(mtl);
@@ -53,8 +53,7 @@ class MtlReader : public tinyobj::MaterialReader {
 
 Vec3f vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
 
-Material convert(const tinyobj::material_t& m, const fs::path& mtl_dir,
-                 std::vector<std::string>& warnings) {
+Material convert(const tinyobj::material_t& m, const fs::path& mtl_dir, std::vector<std::string>& warnings) {
   Material out;
   out.name = m.name;
   out.Ka = vec3(m.ambient);
@@ -78,8 +77,7 @@ Material convert(const tinyobj::material_t& m, const fs::path& mtl_dir,
   return out;
 }
 
-void split_warnings(const std::string& text, const std::string& path,
-                    std::vector<std::string>& warnings) {
+void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings) {
   std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);) {
     // tinyobjloader repeats a missing MTL file in a second line; MtlReader already named it.

@@ -38,8 +38,8 @@ void check_coordinates(std::string_view rest, int needed, const char* kind, cons
     if (digits.size() > 1 && digits.front() == '+') digits.remove_prefix(1);
     double value = 0;
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    const bool parsed = end == digits.data() + digits.size() &&
-                        (ec == std::errc() || ec == std::errc::result_out_of_range);
+    const bool parsed =
+        end == digits.data() + digits.size() && (ec == std::errc() || ec == std::errc::result_out_of_range);
     // from_chars leaves `value` unchanged (0) when out of range: strtod tells 1e400 (inf,
     // rejected below) from 1e-400 (0, accepted).
     if (parsed && ec == std::errc::result_out_of_range)
@@ -62,8 +62,7 @@ void check_skin_weights(std::string_view rest, const std::string& path, std::siz
     if (k % 2 != 0) continue;  // weights are floats, any value
     const double joint = std::strtod(std::string(token).c_str(), nullptr);
     if (!(joint < 2147483648.0))
-      throw InputError(path, line_no,
-                       "`vw` joint id '" + printable(token) + "' is not a number below 2^31");
+      throw InputError(path, line_no, "`vw` joint id '" + printable(token) + "' is not a number below 2^31");
   }
 }
 
@@ -107,14 +106,13 @@ void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRe
       const long have = kind == 0 ? seen.v : kind == 1 ? seen.vt : seen.vn;
       if (index < 0 && have + index < 0)
         throw InputError(path, line_no,
-                         where + " is out of range: only " + std::to_string(have) + " " +
-                             kKindPlurals[kind] + " are defined before this line");
+                         where + " is out of range: only " + std::to_string(have) + " " + kKindPlurals[kind] +
+                             " are defined before this line");
       if (index > have) forward.push_back({line_no, index, kind});
     }
   }
   if (corners < 3)
-    throw InputError(path, line_no,
-                     "a face needs at least 3 corners, found " + std::to_string(corners));
+    throw InputError(path, line_no, "a face needs at least 3 corners, found " + std::to_string(corners));
 }
 
 }  // namespace
@@ -151,9 +149,9 @@ void check_obj_text(std::string_view text, const std::string& path) {
     const long total = ref.kind == 0 ? seen.v : ref.kind == 1 ? seen.vt : seen.vn;
     if (ref.index > total)
       throw InputError(path, ref.line,
-                       std::string("face ") + kKindNames[ref.kind] + " index " +
-                           std::to_string(ref.index) + " is out of range: the file defines " +
-                           std::to_string(total) + " " + kKindPlurals[ref.kind]);
+                       std::string("face ") + kKindNames[ref.kind] + " index " + std::to_string(ref.index) +
+                           " is out of range: the file defines " + std::to_string(total) + " " +
+                           kKindPlurals[ref.kind]);
   }
 }
 

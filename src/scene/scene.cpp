@@ -49,8 +49,7 @@ void Scene::add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material) {
   has_uv.push_back(0);
 }
 
-void Scene::add_object(const ObjModel& model, const Transform& transform,
-                       const MaterialOverride& override) {
+void Scene::add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override) {
   const AffineMap map(transform);
   const auto first_material = static_cast<int32_t>(materials.size());
   for (Material m : model.materials) {
@@ -80,8 +79,7 @@ void Scene::add_object(const ObjModel& model, const Transform& transform,
     if (t < model.triangle_normals.size()) {
       const auto& idx = model.triangle_normals[t];
       if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0) {
-        for (int k = 0; k < 3; ++k)
-          corner_normals[tri][k] = map.normal(model.normals[idx[corner[k]]]);
+        for (int k = 0; k < 3; ++k) corner_normals[tri][k] = map.normal(model.normals[idx[corner[k]]]);
         has_normals[tri] = 1;
       }
     }

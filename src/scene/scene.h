@@ -58,12 +58,12 @@ struct Scene {
   std::vector<Light> lights;
   RenderSettings render;
 
-  TriangleMesh mesh;                        // every object, world space; triangle id = index
-  std::vector<int32_t> triangle_material;   // per triangle, index into materials (always valid)
-  std::vector<int32_t> triangle_object;     // per triangle, index of the object it came from
+  TriangleMesh mesh;                       // every object, world space; triangle id = index
+  std::vector<int32_t> triangle_material;  // per triangle, index into materials (always valid)
+  std::vector<int32_t> triangle_object;    // per triangle, index of the object it came from
   std::vector<Material> materials;
-  std::vector<int32_t> material_texture;    // per material, index into textures or -1
-  std::vector<Image> textures;              // linear RGB (map_Kd)
+  std::vector<int32_t> material_texture;  // per material, index into textures or -1
+  std::vector<Image> textures;            // linear RGB (map_Kd)
   // Per-triangle corner attributes; has_normals/has_uv false where the OBJ gives none.
   std::vector<std::array<Vec3f, 3>> corner_normals;
   std::vector<std::array<std::array<float, 2>, 3>> corner_uv;
@@ -75,8 +75,7 @@ struct Scene {
   // Appends a model's triangles (transformed to world space) and its materials with `override`
   // applied (triangles without a material get the MTL default material, overridden too) as one
   // new object; map_Kd textures are read (InputError when unreadable).
-  void add_object(const ObjModel& model, const Transform& transform,
-                  const MaterialOverride& override = {});
+  void add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override = {});
   // Appends one triangle with material `material` (index) — for scenes built in code.
   void add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material);
   int32_t add_material(const Material& m);

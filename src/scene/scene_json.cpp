@@ -29,8 +29,7 @@ class Reader {
   }
 
   // Rejects any key of `object` not in `allowed`.
-  void keys(const json& object, const std::string& where,
-            std::initializer_list<const char*> allowed) const {
+  void keys(const json& object, const std::string& where, std::initializer_list<const char*> allowed) const {
     if (!object.is_object()) fail(where, "expected an object {...}");
     for (const auto& [key, value] : object.items()) {
       bool known = false;
@@ -55,8 +54,7 @@ class Reader {
     if (!v.is_number_integer() && !v.is_number_unsigned())
       fail(where, "expected an integer, got " + std::string(v.type_name()));
     const long long i = v.get<long long>();
-    if (i < lo || i > hi)
-      fail(where, "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+    if (i < lo || i > hi) fail(where, "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
     return static_cast<int>(i);
   }
   Vec3f vec3(const json& v, const std::string& where) const {
@@ -140,8 +138,7 @@ Transform read_transform(const Reader& r, const json& j, const std::string& wher
   Transform t;
   if (j.contains("scale")) {
     const json& s = j["scale"];
-    t.scale = s.is_number() ? Vec3f{1, 1, 1} * r.number(s, where + ".scale")
-                            : r.vec3(s, where + ".scale");
+    t.scale = s.is_number() ? Vec3f{1, 1, 1} * r.number(s, where + ".scale") : r.vec3(s, where + ".scale");
     if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) r.fail(where + ".scale", "must not be 0");
   }
   if (j.contains("rotate_deg")) t.rotate_deg = r.vec3(j["rotate_deg"], where + ".rotate_deg");
@@ -155,7 +152,11 @@ MaterialOverride read_material(const Reader& r, const json& j, const std::string
   auto col = [&](const char* k, std::optional<Vec3f>& out) {
     if (j.contains(k)) out = r.colour(j[k], Reader::join(where, k));
   };
-  col("Ka", m.Ka); col("Kd", m.Kd); col("Ks", m.Ks); col("Ke", m.Ke); col("Tf", m.Tf);
+  col("Ka", m.Ka);
+  col("Kd", m.Kd);
+  col("Ks", m.Ks);
+  col("Ke", m.Ke);
+  col("Tf", m.Tf);
   if (j.contains("Ns")) m.Ns = r.number(j["Ns"], where + ".Ns");
   if (j.contains("Ni")) m.Ni = r.number(j["Ni"], where + ".Ni");
   if (j.contains("d")) m.d = r.number(j["d"], where + ".d");
@@ -229,10 +230,10 @@ Scene load_scene_json(const std::string& path) {
     r.keys(o, where, {"obj", "transform", "material"});
     if (!o.contains("obj")) r.fail(where + ".obj", "missing (path of a Wavefront OBJ file)");
     const std::string obj = r.path(o["obj"], where + ".obj");
-    const Transform t = o.contains("transform") ? read_transform(r, o["transform"], where + ".transform")
-                                                : Transform{};
-    const MaterialOverride m = o.contains("material") ? read_material(r, o["material"], where + ".material")
-                                                      : MaterialOverride{};
+    const Transform t =
+        o.contains("transform") ? read_transform(r, o["transform"], where + ".transform") : Transform{};
+    const MaterialOverride m =
+        o.contains("material") ? read_material(r, o["material"], where + ".material") : MaterialOverride{};
     scene.add_object(load_obj(obj), t, m);
   }
   return scene;

@@ -10,8 +10,12 @@
 
 namespace rayvec::avx2 {
 
-struct vmaskf { __m256 m; };
-struct vmaskd { __m256d m; };
+struct vmaskf {
+  __m256 m;
+};
+struct vmaskd {
+  __m256d m;
+};
 
 struct vfloat {
   static constexpr int W = 8;

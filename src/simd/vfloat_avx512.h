@@ -11,8 +11,12 @@
 
 namespace rayvec::avx512 {
 
-struct vmaskf { __mmask16 m; };
-struct vmaskd { __mmask8 m; };
+struct vmaskf {
+  __mmask16 m;
+};
+struct vmaskd {
+  __mmask8 m;
+};
 
 struct vfloat {
   static constexpr int W = 16;
@@ -41,16 +45,16 @@ struct vdouble {
   using Scalar = double;
   __m512d v;
   // Loads W floats and widens them exactly to double.
-  static RAYVEC_INLINE vdouble load(const float* p) { return {_mm512_maskz_cvtps_pd(__mmask8(0xff), _mm256_loadu_ps(p))}; }
+  static RAYVEC_INLINE vdouble load(const float* p) {
+    return {_mm512_maskz_cvtps_pd(__mmask8(0xff), _mm256_loadu_ps(p))};
+  }
   static RAYVEC_INLINE vdouble broadcast(double x) { return {_mm512_set1_pd(x)}; }
   static RAYVEC_INLINE vdouble index_bits(uint32_t base) {
     const __m512i iota = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
     return {_mm512_castsi512_pd(_mm512_add_epi64(_mm512_set1_epi64(int64_t(base)), iota))};
   }
   RAYVEC_INLINE void store(double* out) const { _mm512_storeu_pd(out, v); }
-  RAYVEC_INLINE void store_index(int64_t* out) const {
-    _mm512_storeu_si512(out, _mm512_castpd_si512(v));
-  }
+  RAYVEC_INLINE void store_index(int64_t* out) const { _mm512_storeu_si512(out, _mm512_castpd_si512(v)); }
 };
 
 // arithmetic
@@ -131,9 +135,7 @@ RAYVEC_INLINE float hmin(vfloat a) {
 }
 
 // The lanes whose bit is set in b (bit k: lane k); the inverse of bits().
-RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) {
-  return {__mmask16(b)};
-}
+RAYVEC_INLINE vmaskf mask_from_bits(vfloat, unsigned b) { return {__mmask16(b)}; }
 
 // Lane-wise min and max; where either lane is NaN the result is b's lane (the x86 rule, relied on
 // to skip NaN slabs and infinite widenings in box tests).
@@ -157,8 +159,8 @@ RAYVEC_INLINE float hmax_lanes(vfloat v, unsigned lanes) {
 // with a clear sign): the float `mt` pre-test ORs its values and tests the sign once
 // (moller_trumbore.inl, mt_sign_pretest).
 RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) {
-  return {_mm512_castsi512_ps(_mm512_ternarylogic_epi32(
-      _mm512_castps_si512(a.v), _mm512_castps_si512(b.v), _mm512_castps_si512(c.v), 0xFE))};
+  return {_mm512_castsi512_ps(_mm512_ternarylogic_epi32(_mm512_castps_si512(a.v), _mm512_castps_si512(b.v),
+                                                        _mm512_castps_si512(c.v), 0xFE))};
 }
 RAYVEC_INLINE vmaskf sign_clear(vfloat a) {
   return {_mm512_testn_epi32_mask(_mm512_castps_si512(a.v), _mm512_set1_epi32(INT32_MIN))};
@@ -167,7 +169,9 @@ RAYVEC_INLINE vmaskf sign_clear(vfloat a) {
 // vfloat8: 8 floats in a ymm register with AVX-512VL mask compares — the lane type of 8-wide BVH
 // nodes (bvh/simd/box_lanes.inl), where a zmm would test 8 children that do not exist. Only what the
 // box test needs.
-struct vmask8 { __mmask8 m; };
+struct vmask8 {
+  __mmask8 m;
+};
 
 struct vfloat8 {
   static constexpr int W = 8;

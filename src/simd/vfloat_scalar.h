@@ -8,7 +8,9 @@
 
 namespace rayvec::scalar {
 
-struct vmask { bool m; };
+struct vmask {
+  bool m;
+};
 
 template <typename T, typename Bits>
 struct vlane {
@@ -26,41 +28,98 @@ struct vlane {
 using vfloat = vlane<float, uint32_t>;
 using vdouble = vlane<double, uint64_t>;
 
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> operator+(vlane<T, B> a, vlane<T, B> b) { return {a.v + b.v}; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> operator-(vlane<T, B> a, vlane<T, B> b) { return {a.v - b.v}; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> operator*(vlane<T, B> a, vlane<T, B> b) { return {a.v * b.v}; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> operator/(vlane<T, B> a, vlane<T, B> b) { return {a.v / b.v}; }
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> operator+(vlane<T, B> a, vlane<T, B> b) {
+  return {a.v + b.v};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> operator-(vlane<T, B> a, vlane<T, B> b) {
+  return {a.v - b.v};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> operator*(vlane<T, B> a, vlane<T, B> b) {
+  return {a.v * b.v};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> operator/(vlane<T, B> a, vlane<T, B> b) {
+  return {a.v / b.v};
+}
 // No FMA in baseline x86-64: a multiply and an add, each rounded.
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> fmadd(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) { return {a.v * b.v + c.v}; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> fmsub(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) { return {a.v * b.v - c.v}; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> fnmadd(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) { return {c.v - a.v * b.v}; }
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> fmadd(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) {
+  return {a.v * b.v + c.v};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> fmsub(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) {
+  return {a.v * b.v - c.v};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> fnmadd(vlane<T, B> a, vlane<T, B> b, vlane<T, B> c) {
+  return {c.v - a.v * b.v};
+}
 // |a| by clearing the sign bit, as the vector ISAs do (andnot): −0 gives +0, a NaN stays a NaN.
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> abs(vlane<T, B> a) { const B mag = ~(B(1) << (sizeof(B) * 8 - 1)); return {std::bit_cast<T>(B(std::bit_cast<B>(a.v) & mag))}; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> sign_bit(vlane<T, B> a) {
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> abs(vlane<T, B> a) {
+  const B mag = ~(B(1) << (sizeof(B) * 8 - 1));
+  return {std::bit_cast<T>(B(std::bit_cast<B>(a.v) & mag))};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> sign_bit(vlane<T, B> a) {
   const B sign = B(1) << (sizeof(B) * 8 - 1);
   return {std::bit_cast<T>(B(std::bit_cast<B>(a.v) & sign))};
 }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> xor_bits(vlane<T, B> a, vlane<T, B> b) {
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> xor_bits(vlane<T, B> a, vlane<T, B> b) {
   return {std::bit_cast<T>(B(std::bit_cast<B>(a.v) ^ std::bit_cast<B>(b.v)))};
 }
 // C++ comparisons are ordered: false whenever either side is NaN.
-template <typename T, typename B> RAYVEC_INLINE vmask operator>=(vlane<T, B> a, vlane<T, B> b) { return {a.v >= b.v}; }
-template <typename T, typename B> RAYVEC_INLINE vmask operator<=(vlane<T, B> a, vlane<T, B> b) { return {a.v <= b.v}; }
-template <typename T, typename B> RAYVEC_INLINE vmask operator>(vlane<T, B> a, vlane<T, B> b) { return {a.v > b.v}; }
-template <typename T, typename B> RAYVEC_INLINE vmask operator<(vlane<T, B> a, vlane<T, B> b) { return {a.v < b.v}; }
+template <typename T, typename B>
+RAYVEC_INLINE vmask operator>=(vlane<T, B> a, vlane<T, B> b) {
+  return {a.v >= b.v};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vmask operator<=(vlane<T, B> a, vlane<T, B> b) {
+  return {a.v <= b.v};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vmask operator>(vlane<T, B> a, vlane<T, B> b) {
+  return {a.v > b.v};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vmask operator<(vlane<T, B> a, vlane<T, B> b) {
+  return {a.v < b.v};
+}
 RAYVEC_INLINE vmask operator&(vmask a, vmask b) { return {a.m && b.m}; }
 RAYVEC_INLINE bool any(vmask a) { return a.m; }
 RAYVEC_INLINE unsigned bits(vmask a) { return a.m ? 1u : 0u; }
-template <typename T, typename B> RAYVEC_INLINE vmask first_lanes(vlane<T, B>, uint32_t n) { return {n > 0}; }
-template <typename T, typename B> RAYVEC_INLINE vmask lanes_between(vlane<T, B>, uint32_t lo, uint32_t hi) { return {lo == 0 && hi > 0}; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> select(vmask m, vlane<T, B> a, vlane<T, B> b) { return m.m ? b : a; }
+template <typename T, typename B>
+RAYVEC_INLINE vmask first_lanes(vlane<T, B>, uint32_t n) {
+  return {n > 0};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vmask lanes_between(vlane<T, B>, uint32_t lo, uint32_t hi) {
+  return {lo == 0 && hi > 0};
+}
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> select(vmask m, vlane<T, B> a, vlane<T, B> b) {
+  return m.m ? b : a;
+}
 
 // Min and max by the x86 rule of the vector ISAs: where either is NaN the result is b.
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> vmin(vlane<T, B> a, vlane<T, B> b) { return a.v < b.v ? a : b; }
-template <typename T, typename B> RAYVEC_INLINE vlane<T, B> vmax(vlane<T, B> a, vlane<T, B> b) { return a.v > b.v ? a : b; }
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> vmin(vlane<T, B> a, vlane<T, B> b) {
+  return a.v < b.v ? a : b;
+}
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> vmax(vlane<T, B> a, vlane<T, B> b) {
+  return a.v > b.v ? a : b;
+}
 
 // The smallest lane: the only one.
-template <typename T, typename B> RAYVEC_INLINE T hmin(vlane<T, B> a) { return a.v; }
+template <typename T, typename B>
+RAYVEC_INLINE T hmin(vlane<T, B> a) {
+  return a.v;
+}
 
 // Bitwise or of three vectors, and the lanes whose sign bit is clear (+0, positive, +inf, or a NaN
 // with a clear sign): the float `mt` pre-test ORs its values and tests the sign once

@@ -29,7 +29,7 @@ TEST(Visibility, HandCheckedFilesGiveKnownAnswers) {
   using V = Visibility;
   // Rows 0-2: the blocking triangle's own corners; 3: behind it; 4: in front; 5: nan; 6: beside;
   // 7: duplicate position of row 0; 8, 9: behind it (and corners of a triangle of their own).
-  const std::vector<V> expected = {V::visible, V::visible, V::visible, V::blocked, V::visible,
+  const std::vector<V> expected = {V::visible,   V::visible, V::visible, V::blocked, V::visible,
                                    V::undefined, V::visible, V::visible, V::blocked, V::blocked};
   EXPECT_EQ(got, expected);
   EXPECT_EQ(dropped, 1u);  // the face using the nan row
@@ -73,8 +73,8 @@ TEST(Visibility, BvhAgreesWithBruteForceOnAConnectedMesh) {
 
 TEST(Visibility, SegmentIsOpenAtTheOriginAndTheVertex) {
   // A triangle through the origin and one at exactly the vertex's depth do not block.
-  const std::vector<Vec3f> verts = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0},   // through the origin
-                                    {-1, -1, 2}, {1, -1, 2}, {0, 1, 2},   // at the vertex's depth
+  const std::vector<Vec3f> verts = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0},  // through the origin
+                                    {-1, -1, 2}, {1, -1, 2}, {0, 1, 2},  // at the vertex's depth
                                     {0, 0, 2},   {0, 0, 0}};
   const auto got = run(verts, {{0, 1, 2}, {3, 4, 5}}, {0, 0, 0});
   EXPECT_EQ(got[6], Visibility::visible);

@@ -15,7 +15,7 @@ TEST(ExactOracle, EdgesAndVerticesAreClosed) {
   double t = 0;
   EXPECT_TRUE(exact_hits_triangle(Ray{{0, 0, 0}, {0, 0, 1}}, A, B, C, &t));  // vertex
   EXPECT_EQ(t, 1.0);
-  EXPECT_TRUE(exact_hits_triangle(Ray{{0.5f, 0.5f, 0}, {0, 0, 1}}, A, B, C));  // hypotenuse
+  EXPECT_TRUE(exact_hits_triangle(Ray{{0.5f, 0.5f, 0}, {0, 0, 1}}, A, B, C));    // hypotenuse
   EXPECT_TRUE(exact_hits_triangle(Ray{{0.25f, 0, 0}, {0, 0, 2}}, A, B, C, &t));  // edge
   EXPECT_EQ(t, 0.5);
 }
@@ -29,7 +29,8 @@ TEST(ExactOracle, OneUlpOutsideMisses) {
 
 TEST(ExactOracle, TWindowIsClosed) {
   EXPECT_TRUE(exact_hits_triangle(Ray{{0.1f, 0.1f, 0}, {0, 0, 1}, 1.0f, 1.0f}, A, B, C));
-  EXPECT_FALSE(exact_hits_triangle(Ray{{0.1f, 0.1f, 0}, {0, 0, 1}, 0.0f, std::nextafter(1.0f, 0.0f)}, A, B, C));
+  EXPECT_FALSE(
+      exact_hits_triangle(Ray{{0.1f, 0.1f, 0}, {0, 0, 1}, 0.0f, std::nextafter(1.0f, 0.0f)}, A, B, C));
   EXPECT_FALSE(exact_hits_triangle(Ray{{0.1f, 0.1f, 0}, {0, 0, -1}}, A, B, C));  // behind
 }
 

@@ -36,14 +36,12 @@ const std::vector<Fixture>& fixtures() {
   return all;
 }
 
-bool watertight(Intersector in) {
-  return in == Intersector::watertight || in == Intersector::watertight64;
-}
+bool watertight(Intersector in) { return in == Intersector::watertight || in == Intersector::watertight64; }
 
 bool finite_ray(const Ray& r) {
   return std::isfinite(r.org.x) && std::isfinite(r.org.y) && std::isfinite(r.org.z) &&
-         std::isfinite(r.dir.x) && std::isfinite(r.dir.y) && std::isfinite(r.dir.z) &&
-         !std::isnan(r.tmin) && !std::isnan(r.tmax);
+         std::isfinite(r.dir.x) && std::isfinite(r.dir.y) && std::isfinite(r.dir.z) && !std::isnan(r.tmin) &&
+         !std::isnan(r.tmax);
 }
 
 // nullptr when the accelerator is not available yet (the BVH is built by another issue).
@@ -90,13 +88,12 @@ TEST_P(HardCases, MatchOracleWithinContract) {
     }
     if (f.crossing && watertight(p.intersector)) {
       EXPECT_GT(s.oracle_hits, f.rays.size() * 9 / 10) << "family should be made of crossing rays";
-      EXPECT_EQ(s.false_misses, 0u) << "watertight mode let " << s.false_misses << " of "
-                                    << s.oracle_hits << " rays slip through; first ray index "
+      EXPECT_EQ(s.false_misses, 0u) << "watertight mode let " << s.false_misses << " of " << s.oracle_hits
+                                    << " rays slip through; first ray index "
                                     << (s.false_miss_rays.empty() ? 0 : s.false_miss_rays[0]);
     }
-    RecordProperty(f.name, std::to_string(s.false_misses) + " false misses, " +
-                               std::to_string(s.false_hits) + " false hits, " +
-                               std::to_string(s.wrong_nearest) + " wrong nearest of " +
+    RecordProperty(f.name, std::to_string(s.false_misses) + " false misses, " + std::to_string(s.false_hits) +
+                               " false hits, " + std::to_string(s.wrong_nearest) + " wrong nearest of " +
                                std::to_string(s.rays));
   }
 }

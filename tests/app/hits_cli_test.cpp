@@ -46,11 +46,10 @@ Fixture write_random_inputs(const std::string& name) {
     const Vec3f target{u(rng), u(rng), u(rng)};
     const Vec3f dir = target - o;
     if (r % 3 == 0)
-      std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", o.x, o.y, o.z,
-                    dir.x, dir.y, dir.z, 0.1f * u(rng), 0.5f + u(rng));
+      std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", o.x, o.y, o.z, dir.x,
+                    dir.y, dir.z, 0.1f * u(rng), 0.5f + u(rng));
     else
-      std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", o.x, o.y, o.z, dir.x,
-                    dir.y, dir.z);
+      std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", o.x, o.y, o.z, dir.x, dir.y, dir.z);
     rays += line;
   }
   test::write_file(f.obj, obj);
@@ -107,12 +106,14 @@ TEST(HitsCli, ClosestHitsReadBackToTheLibraryResults) {
 TEST(HitsCli, AnyHitMatchesTheLibraryAndWritesTheFileAtomically) {
   const Fixture f = write_random_inputs("hits_any");
   const std::string out = f.dir + "/any.csv";
-  const auto r = test::run_cli("hits --any --isa scalar --mesh " + f.obj + " --rays " + f.rays + " -o " + out);
+  const auto r =
+      test::run_cli("hits --any --isa scalar --mesh " + f.obj + " --rays " + f.rays + " -o " + out);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "");
   const ObjModel model = load_obj(f.obj);
   const RayBatch rays = read_rays_csv(f.rays);
-  const auto accel = make_accelerator(AccelKind::brute, model.mesh, TraceConfig{Isa::scalar, Intersector::mt});
+  const auto accel =
+      make_accelerator(AccelKind::brute, model.mesh, TraceConfig{Isa::scalar, Intersector::mt});
   const auto lines = lines_of(test::read_file(out));
   ASSERT_EQ(lines.size(), rays.size() + 1);
   EXPECT_EQ(lines[0], "ray,hit");
@@ -142,7 +143,8 @@ const std::string kTri = "v 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\n";
 
 TEST(HitsCli, EveryInputErrorNamesFileAndLine) {
   expect_failure("hits_e5", kTri, "0,0,0,0,0,1\n0,0,0,0,0\n", 2, "r.csv:2: found 5 fields, expected 6");
-  expect_failure("hits_enum", kTri, "0,0,0,0,0,1\n\n0,0,zero,0,0,1\n", 2, "r.csv:3: field 3 'zero' is not a number");
+  expect_failure("hits_enum", kTri, "0,0,0,0,0,1\n\n0,0,zero,0,0,1\n", 2,
+                 "r.csv:3: field 3 'zero' is not a number");
   expect_failure("hits_enan", kTri, "nan,0,0,0,0,1\n", 2, "r.csv:1: origin must be finite, but ox is nan");
   expect_failure("hits_edir", kTri, "0,0,0,0,0,0\n", 2, "r.csv:1: direction is zero");
   expect_failure("hits_eobj", kTri + "f 1 2 4\n", "0,0,0,0,0,1\n", 2,

@@ -87,8 +87,8 @@ TEST(Interrupt, SigintWhileTracingRemovesTheTemporaryAndKeepsTheOldOutput) {
   test::write_file(dir + "/m.obj", obj);
   test::write_file(dir + "/r.csv", rays);
   test::write_file(dir + "/out.csv", "old\n");
-  const pid_t pid = spawn_cli({"hits", "--accel", "brute", "--mesh", dir + "/m.obj", "--rays",
-                               dir + "/r.csv", "-o", dir + "/out.csv"},
+  const pid_t pid = spawn_cli({"hits", "--accel", "brute", "--mesh", dir + "/m.obj", "--rays", dir + "/r.csv",
+                               "-o", dir + "/out.csv"},
                               dir);
   ASSERT_TRUE(wait_until([&] { return has_temporary(dir, "out.csv"); })) << "no temporary appeared";
   EXPECT_EQ(interrupt(pid), 130) << test::read_file(dir + "/stderr");
@@ -103,11 +103,12 @@ TEST(Interrupt, SigintDuringARenderLeavesNoImage) {
   test::write_file(dir + "/m.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
   test::write_file(dir + "/out.png", "old\n");
   // 512×512 pixels at 4096 samples each: minutes of work, interrupted once it has begun.
-  const pid_t pid = spawn_cli({"render", dir + "/m.obj", "-o", dir + "/out.png", "--spp", "4096",
-                               "--width", "512", "--height", "512"},
+  const pid_t pid = spawn_cli({"render", dir + "/m.obj", "-o", dir + "/out.png", "--spp", "4096", "--width",
+                               "512", "--height", "512"},
                               dir);
-  ASSERT_TRUE(wait_until([&] { return test::read_file(dir + "/stdout").find("scene:") != std::string::npos; }))
-      << test::read_file(dir + "/stderr");
+  ASSERT_TRUE(wait_until([&] {
+    return test::read_file(dir + "/stdout").find("scene:") != std::string::npos;
+  })) << test::read_file(dir + "/stderr");
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   EXPECT_EQ(interrupt(pid), 130) << test::read_file(dir + "/stderr");
   EXPECT_FALSE(has_temporary(dir, "out.png"));

@@ -31,15 +31,14 @@ test::CommandResult hits(const std::string& dir, const std::string& obj, const s
 }
 
 // Writes `obj_text` and `rays_text` into a fresh directory, runs `hits`, and checks the rejection.
-void expect_hits_rejects(const std::string& name, const std::string& obj_text,
-                         const std::string& rays_text, const std::string& message) {
+void expect_hits_rejects(const std::string& name, const std::string& obj_text, const std::string& rays_text,
+                         const std::string& message) {
   const std::string dir = test::temp_dir("malformed_" + name);
   test::write_file(dir + "/m.obj", obj_text);
   test::write_file(dir + "/r.csv", rays_text);
   const auto r = hits(dir, dir + "/m.obj", dir + "/r.csv");
   EXPECT_EQ(r.status, 2) << name << ": " << r.err;
-  EXPECT_NE(r.err.find(message), std::string::npos) << name << ": expected '" << message
-                                                    << "' in: " << r.err;
+  EXPECT_NE(r.err.find(message), std::string::npos) << name << ": expected '" << message << "' in: " << r.err;
   EXPECT_TRUE(no_output(dir, "out.csv")) << name;
   EXPECT_LT(r.err.size(), 1000u) << name << ": the message should be short";
 }
@@ -70,9 +69,10 @@ TEST(MalformedInputs, AssimpOddModelsAreRejectedOrReadAsDocumented) {
   // Accepted: no final newline, a concave polygon (ear clipping), runs of spaces.
   const std::string dir = test::temp_dir("malformed_assimp_ok");
   test::write_file(dir + "/r.csv", kRay);
-  for (const auto& [file, triangles] : {std::pair<std::string, std::string>{"box_without_lineending.obj", "12"},
-                                        {"concave_polygon.obj", "44"},
-                                        {"multiple_spaces.obj", "1"}}) {
+  for (const auto& [file, triangles] :
+       {std::pair<std::string, std::string>{"box_without_lineending.obj", "12"},
+        {"concave_polygon.obj", "44"},
+        {"multiple_spaces.obj", "1"}}) {
     const auto r = hits(dir, kData + file, dir + "/r.csv");
     EXPECT_EQ(r.status, 0) << file << ": " << r.err;
     EXPECT_NE(r.err.find(" " + triangles + " triangles"), std::string::npos) << file << ": " << r.err;
@@ -80,7 +80,8 @@ TEST(MalformedInputs, AssimpOddModelsAreRejectedOrReadAsDocumented) {
 }
 
 TEST(MalformedInputs, TruncatedAndJunkObjFilesNameTheLine) {
-  expect_hits_rejects("trunc_v", "v 0 0 0\nv 1 0 0\nv 0 1", kRay, "m.obj:3: `v` needs 3 coordinates, found 2");
+  expect_hits_rejects("trunc_v", "v 0 0 0\nv 1 0 0\nv 0 1", kRay,
+                      "m.obj:3: `v` needs 3 coordinates, found 2");
   expect_hits_rejects("trunc_f", kTri + "f 1 2", kRay, "m.obj:5: a face needs at least 3 corners, found 2");
   expect_hits_rejects("nul", kTri + std::string("v 0 0 \0\x01\x02", 9), kRay,
                       "m.obj:5: contains a NUL byte: this is binary data, not a text file");
@@ -109,7 +110,8 @@ TEST(MalformedInputs, NonFiniteVerticesAndBadIndicesAreRejected) {
   expect_hits_rejects("range", kTri + "f 1 2 4\n", kRay, "m.obj:5: face vertex index 4 is out of range");
   expect_hits_rejects("hugeidx", kTri + "f 1 2 99999999999999999999\n", kRay,
                       "m.obj:5: face corner 3: vertex index '99999999999999999999' is not an integer");
-  expect_hits_rejects("vn", kTri + "f 1//1 2//1 3//1\n", kRay, "m.obj:5: face normal index 1 is out of range");
+  expect_hits_rejects("vn", kTri + "f 1//1 2//1 3//1\n", kRay,
+                      "m.obj:5: face normal index 1 is out of range");
   expect_hits_rejects("one", kTri + "f 1\n", kRay, "m.obj:5: a face needs at least 3 corners, found 1");
   expect_hits_rejects("two", kTri + "f 1 2\n", kRay, "m.obj:5: a face needs at least 3 corners, found 2");
 }
@@ -140,7 +142,8 @@ TEST(MalformedInputs, MissingMtlAndTextureAreWarnings) {
   auto r = hits(dir, dir + "/m.obj", dir + "/r.csv");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("warning: " + dir + "/m.obj: material file " + dir + "/nope.mtl not found"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
   // A device as material file would be read forever.
   test::write_file(dir + "/z.obj", "mtllib /dev/zero\n" + kTri);
   r = hits(dir, dir + "/z.obj", dir + "/r.csv");
@@ -148,8 +151,8 @@ TEST(MalformedInputs, MissingMtlAndTextureAreWarnings) {
   EXPECT_NE(r.err.find("material file /dev/zero is not a regular file"), std::string::npos) << r.err;
   r = hits(dir, dir + "/t.obj", dir + "/r.csv");
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.err.find("warning: material 'a': texture " + dir + "/missing.png not found"),
-            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("warning: material 'a': texture " + dir + "/missing.png not found"), std::string::npos)
+      << r.err;
 }
 
 TEST(MalformedInputs, Utf8ByteOrderMarkIsIgnored) {
@@ -167,15 +170,16 @@ TEST(MalformedInputs, BrokenCsvFilesNameTheLine) {
   expect_hits_rejects("csv_trunc", kTri, "0,0,0,0,0,1\n0,0,0,0,0,", "r.csv:2: field 6 '' is empty");
   expect_hits_rejects("csv_cut", kTri, "0,0,0,0,0,1\n0,0,0,0", "r.csv:2: found 4 fields, expected 6");
   expect_hits_rejects("csv_nul", kTri, std::string("0,0,0,0,0,1\n\0\0", 14), "r.csv:2: contains a NUL byte");
-  expect_hits_rejects("csv_junk", kTri, "0,0,0,0,0,\x80\x81\n", "r.csv:1: field 6 '\\x80\\x81' is not a number");
+  expect_hits_rejects("csv_junk", kTri, "0,0,0,0,0,\x80\x81\n",
+                      "r.csv:1: field 6 '\\x80\\x81' is not a number");
   expect_hits_rejects("csv_long", kTri, "0,0,0,0,0," + std::string(100000, '7') + "x\n",
                       "r.csv:1: field 6 '7777777777777777777777777777777777777777...' is not a number");
   // Visibility inputs.
   const std::string dir = test::temp_dir("malformed_vis");
   test::write_file(dir + "/v.csv", "0,0,1\n1,0,1\n0,1\n");
   test::write_file(dir + "/f.csv", "0,1,2\n");
-  auto r = test::run_cli("visibility --verts " + dir + "/v.csv --faces " + dir + "/f.csv -o " + dir +
-                         "/out.txt");
+  auto r =
+      test::run_cli("visibility --verts " + dir + "/v.csv --faces " + dir + "/f.csv -o " + dir + "/out.txt");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find(dir + "/v.csv:3: found 2 fields, expected 3"), std::string::npos) << r.err;
   EXPECT_TRUE(no_output(dir, "out.txt"));
@@ -195,8 +199,7 @@ void expect_render_rejects(const std::string& name, const std::string& json, con
   test::write_file(dir + "/s.json", json);
   const auto r = test::run_cli("render -q " + dir + "/s.json -o " + dir + "/out.png " + extra_args);
   EXPECT_EQ(r.status, 2) << name << ": " << r.err;
-  EXPECT_NE(r.err.find(message), std::string::npos) << name << ": expected '" << message
-                                                    << "' in: " << r.err;
+  EXPECT_NE(r.err.find(message), std::string::npos) << name << ": expected '" << message << "' in: " << r.err;
   EXPECT_TRUE(no_output(dir, "out.png")) << name;
 }
 
@@ -204,7 +207,8 @@ const std::string kObjects = R"("objects": [{"obj": "m.obj"}])";
 
 TEST(MalformedInputs, SceneJsonOfTheWrongTypesIsRejected) {
   if (!render_available()) GTEST_SKIP() << "no render command in this build";
-  expect_render_rejects("json_trunc", "{" + kObjects + ", \"camera\": {\"width\": 6", "s.json:1: invalid JSON");
+  expect_render_rejects("json_trunc", "{" + kObjects + ", \"camera\": {\"width\": 6",
+                        "s.json:1: invalid JSON");
   expect_render_rejects("json_array", "[1, 2]", "expected an object");
   expect_render_rejects("json_objects", R"({"objects": {"obj": "m.obj"}})",
                         "objects: expected a non-empty array of objects");
@@ -216,9 +220,10 @@ TEST(MalformedInputs, SceneJsonOfTheWrongTypesIsRejected) {
                         "lights[0].type: expected a string, got number");
   expect_render_rejects("json_obj", R"({"objects": [{"obj": 7}]})", "objects[0].obj: expected a string");
   expect_render_rejects("json_missing_obj", R"({"objects": [{"obj": "nope.obj"}]})", "nope.obj: cannot read");
-  expect_render_rejects("json_texture", R"({"objects": [{"obj": "m.obj", "material": {"map_Kd": "nope.png"}}]})",
-                        "nope.png");
-  expect_render_rejects("json_deep", std::string(100000, '[') + std::string(100000, ']'), "expected an object");
+  expect_render_rejects("json_texture",
+                        R"({"objects": [{"obj": "m.obj", "material": {"map_Kd": "nope.png"}}]})", "nope.png");
+  expect_render_rejects("json_deep", std::string(100000, '[') + std::string(100000, ']'),
+                        "expected an object");
 }
 
 TEST(MalformedInputs, AbsurdImageSizesAndDepthsAreRejectedBeforeWork) {

@@ -12,8 +12,8 @@ const std::string kData = RAYVEC_TEST_DATA;
 
 TEST(VisibilityCli, HandCheckedFilesGiveTheExpectedLines) {
   const std::string dir = test::temp_dir("vis_cli");
-  const auto r = test::run_cli("visibility --verts " + kData + "/visibility/verts.csv --faces " +
-                               kData + "/visibility/meshes.csv -o " + dir + "/out.txt");
+  const auto r = test::run_cli("visibility --verts " + kData + "/visibility/verts.csv --faces " + kData +
+                               "/visibility/meshes.csv -o " + dir + "/out.txt");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(test::read_file(dir + "/out.txt"), test::read_file(kData + "/visibility/expected.txt"));
   // One warning for the dropped face, counted.
@@ -34,7 +34,8 @@ TEST(VisibilityCli, BadInputsExitTwoNamingFileAndLine) {
   const std::string dir = test::temp_dir("vis_bad");
   test::write_file(dir + "/v.csv", "0,0,1\n1,0,1\n0,1,1\n");
   test::write_file(dir + "/f.csv", "0,1,2\n0,1,3\n");
-  auto r = test::run_cli("visibility --verts " + dir + "/v.csv --faces " + dir + "/f.csv -o " + dir + "/o.txt");
+  auto r =
+      test::run_cli("visibility --verts " + dir + "/v.csv --faces " + dir + "/f.csv -o " + dir + "/o.txt");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find(dir + "/f.csv:2: field 3 (3) is out of range"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/o.txt"));

@@ -50,7 +50,8 @@ TEST(BenchRays, BuildsReportsEveryBuildAndTheirMedian) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"builds\":4,"), std::string::npos) << r.out;
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("\"build_s\":([0-9.]+),\"build_runs_s\":\\[([^\\]]*)\\]")))
+  ASSERT_TRUE(
+      std::regex_search(r.out, m, std::regex("\"build_s\":([0-9.]+),\"build_runs_s\":\\[([^\\]]*)\\]")))
       << r.out;
   std::vector<double> runs;
   const std::string list = m[2].str();

@@ -41,8 +41,8 @@ class BvhCaseTest : public ::testing::TestWithParam<BvhCase> {
 };
 
 inline std::string bvh_case_name(const ::testing::TestParamInfo<BvhCase>& info) {
-  return std::string(isa_name(info.param.isa)) + "_" + intersector_name(info.param.intersector) +
-         "_w" + std::to_string(info.param.width);
+  return std::string(isa_name(info.param.isa)) + "_" + intersector_name(info.param.intersector) + "_w" +
+         std::to_string(info.param.width);
 }
 
 }  // namespace rayvec::test

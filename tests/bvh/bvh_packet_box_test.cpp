@@ -120,9 +120,14 @@ TEST_P(BvhPacketBox, ZeroTinyAndNegativeZeroDirectionComponents) {
         Vec3f d{u(rng) - eye.x, u(rng) - eye.y, -3.0f};
         if (mesh == &soup) d = Vec3f{d.x * 0.25f, d.y * 0.25f, d.z};
         switch (p % 4) {
-          case 0: if (k == 5) d.x = (p & 4) ? -0.0f : 0.0f; break;  // one lane
-          case 1: d.y = (k & 1) ? -0.0f : 0.0f; break;               // every lane, both zeros
-          case 2: d.x *= 1e-30f; d.y *= 1e-30f; break;              // 1/d ~ 1e30
+          case 0:
+            if (k == 5) d.x = (p & 4) ? -0.0f : 0.0f;
+            break;                                      // one lane
+          case 1: d.y = (k & 1) ? -0.0f : 0.0f; break;  // every lane, both zeros
+          case 2:
+            d.x *= 1e-30f;
+            d.y *= 1e-30f;
+            break;  // 1/d ~ 1e30
           default: break;
         }
         rays.push_back(Ray{eye, d});

@@ -41,7 +41,6 @@ std::vector<Ray> camera_tiles(Vec3f eye, int w, int h, float half_width, float t
 
 class BvhPacket : public test::BvhCaseTest {
  protected:
-
   // closest_stream over rays[0..n) against closest() per ray and brute force; returns the hits.
   int expect_exact(const TriangleMesh& mesh, const std::vector<Ray>& rays,
                    std::optional<SahConfig> sah = std::nullopt) {
@@ -121,7 +120,7 @@ TEST_P(BvhPacket, PartialAndMixedPacketsMatchSingleRays) {
   for (std::size_t i = 0; i < rays.size(); i += 37) rays[i].org.x = std::nanf("");
   for (std::size_t i = 64; i < 128; i += 3) rays[i].tmin = 0.1f;  // mixed tmin packets
   for (std::size_t i = 128; i < 192; ++i)
-    if (i % 16 > 2) rays[i].dir = {std::nanf(""), 0, 0};  // packets with 3 live lanes
+    if (i % 16 > 2) rays[i].dir = {std::nanf(""), 0, 0};                    // packets with 3 live lanes
   for (const Ray& r : test::random_rays(300, 1.5f, 24)) rays.push_back(r);  // diverging packets
   rays.resize(rays.size() - 5);
   EXPECT_GT(expect_exact(soup, rays), 200);
@@ -143,10 +142,10 @@ TEST_P(BvhPacket, AxisParallelLanesOnTheRootBoxPlanes) {
   EXPECT_GT(expect_exact(grid, rays), 100);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllIsasIntersectorsWidths, BvhPacket,
-    ::testing::ValuesIn(test::bvh_cases({Intersector::mt, Intersector::paper, Intersector::watertight})),
-    test::bvh_case_name);
+INSTANTIATE_TEST_SUITE_P(AllIsasIntersectorsWidths, BvhPacket,
+                         ::testing::ValuesIn(test::bvh_cases({Intersector::mt, Intersector::paper,
+                                                              Intersector::watertight})),
+                         test::bvh_case_name);
 
 }  // namespace
 }  // namespace rayvec

@@ -35,7 +35,8 @@ inline TriangleMesh sphere(float r, int rings, int segments) {
   for (int i = 0; i <= rings; ++i)
     for (int j = 0; j < segments; ++j) {
       const float th = pi * float(i) / float(rings), ph = 2 * pi * float(j) / float(segments);
-      m.positions.push_back({r * std::sin(th) * std::cos(ph), r * std::cos(th), r * std::sin(th) * std::sin(ph)});
+      m.positions.push_back(
+          {r * std::sin(th) * std::cos(ph), r * std::cos(th), r * std::sin(th) * std::sin(ph)});
     }
   auto at = [&](int i, int j) { return uint32_t(i * segments + (j % segments)); };
   for (int i = 0; i < rings; ++i)

@@ -14,7 +14,8 @@ namespace rayvec::test {
 
 // closest_stream of `bvh` over `rays` against bvh.closest() and brute.closest() per ray; stops at
 // the first ray that differs; returns the number of hits.
-inline int expect_stream_exact(const BvhAccelerator& bvh, const BruteForce& brute, const std::vector<Ray>& rays) {
+inline int expect_stream_exact(const BvhAccelerator& bvh, const BruteForce& brute,
+                               const std::vector<Ray>& rays) {
   auto bits = [](float x) { return std::bit_cast<uint32_t>(x); };
   std::vector<Hit> stream(rays.size());
   bvh.closest_stream(rays.data(), stream.data(), rays.size());

@@ -25,8 +25,7 @@ class BvhTraversal : public test::BvhCaseTest {
   // an earlier result (Hit::t), so two hits whose t rounds to the same float may be resolved
   // differently by one brute-force call and by several leaf calls: accept either id then.
   bool rounded_t_ties() const {
-    return GetParam().intersector == Intersector::mt64 ||
-           GetParam().intersector == Intersector::watertight64;
+    return GetParam().intersector == Intersector::mt64 || GetParam().intersector == Intersector::watertight64;
   }
 
   // Every ray through both accelerators; any-hit also with a filter ignoring even ids.
@@ -90,8 +89,10 @@ TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   const TriangleMesh one = test::random_soup(10, 0.1f, 23);
   const BvhAccelerator a(one, config(), table), b(one, config(), direct);
   const bool has_direct = GetParam().isa == Isa::avx512 && GetParam().intersector == Intersector::mt;
-  if (has_direct) EXPECT_NE(a.traversal().closest, b.traversal().closest);
-  else EXPECT_EQ(a.traversal().closest, b.traversal().closest);  // no direct form: both the table call
+  if (has_direct)
+    EXPECT_NE(a.traversal().closest, b.traversal().closest);
+  else
+    EXPECT_EQ(a.traversal().closest, b.traversal().closest);  // no direct form: both the table call
   EXPECT_EQ(b.traversal().direct_leaf, has_direct);
 }
 
@@ -115,7 +116,7 @@ TEST_P(BvhTraversal, MatchesBruteForceWithLargeLeavesAndFewBins) {
 
 TEST_P(BvhTraversal, MatchesBruteForceOnClosedSphereFromInsideAndOutside) {
   const TriangleMesh s = test::sphere(1.0f, 30, 40);
-  expect_same(s, test::random_rays(1000, 0.9f, 7));   // inside: every ray hits
+  expect_same(s, test::random_rays(1000, 0.9f, 7));  // inside: every ray hits
   expect_same(s, test::random_rays(1000, 2.0f, 8));
 }
 
@@ -126,7 +127,7 @@ TEST_P(BvhTraversal, MatchesBruteForceOnCoplanarTrianglesAndAxisParallelRays) {
     const float x = float(i) * 0.5f;  // through vertices and along edges
     rays.push_back(Ray{{x, x * 0.5f, 5.0f}, {0.0f, 0.0f, -1.0f}});
     rays.push_back(Ray{{x, 3.0f, -5.0f}, {-0.0f, 0.0f, 2.0f}});
-    rays.push_back(Ray{{-1.0f, x, 0.0f}, {1.0f, 0.0f, 0.0f}});   // in the plane
+    rays.push_back(Ray{{-1.0f, x, 0.0f}, {1.0f, 0.0f, 0.0f}});     // in the plane
     rays.push_back(Ray{{x, -1.0f, 1e-30f}, {0.0f, 1.0f, -0.0f}});  // parallel, just above
   }
   expect_same(g, rays);
@@ -170,8 +171,7 @@ TEST_P(BvhTraversal, MatchesBruteForceOnTinyAndEmptyMeshes) {
 TEST_P(BvhTraversal, DeepTreesMatchBruteForce) {
   TriangleMesh chain;
   float x = 1.0f;
-  for (int i = 0; i < 150; ++i, x *= 1.4f)
-    chain.add_triangle({x, -1, -1}, {x, 1, -1}, {x * 1.01f, 0, 1});
+  for (int i = 0; i < 150; ++i, x *= 1.4f) chain.add_triangle({x, -1, -1}, {x, 1, -1}, {x * 1.01f, 0, 1});
   SahConfig sah;
   sah.max_leaf = 1;
   sah.leaf_block = 1;
@@ -224,9 +224,9 @@ TEST_P(BvhTraversal, NonFiniteRaysMiss) {
   const TriangleMesh s = test::sphere(1.0f, 10, 10);
   const float nan = std::nanf(""), inf = kInf;
   const BvhAccelerator bvh(s, config());
-  for (const Ray& r : {Ray{{nan, 0, 0}, {1, 0, 0}}, Ray{{0, 0, 0}, {nan, 1, 0}},
-                       Ray{{inf, 0, 0}, {-1, 0, 0}}, Ray{{0, 0, 0}, {inf, 0, 0}},
-                       Ray{{0, 0, 0}, {1, 0, 0}, nan, 5}, Ray{{0, 0, 0}, {1, 0, 0}, 0, nan}}) {
+  for (const Ray& r :
+       {Ray{{nan, 0, 0}, {1, 0, 0}}, Ray{{0, 0, 0}, {nan, 1, 0}}, Ray{{inf, 0, 0}, {-1, 0, 0}},
+        Ray{{0, 0, 0}, {inf, 0, 0}}, Ray{{0, 0, 0}, {1, 0, 0}, nan, 5}, Ray{{0, 0, 0}, {1, 0, 0}, 0, nan}}) {
     EXPECT_EQ(bvh.closest(r).tri, -1);
     EXPECT_FALSE(bvh.occluded(r));
   }
@@ -234,10 +234,10 @@ TEST_P(BvhTraversal, NonFiniteRaysMiss) {
   expect_same(s, {Ray{{0, 0, 0}, {0, 0, 0}}, Ray{{0, 0, 0}, {1, 0, 0}, -inf, inf}});
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllIsasIntersectorsWidths, BvhTraversal,
-    ::testing::ValuesIn(test::bvh_cases({std::begin(kAllIntersectors), std::end(kAllIntersectors)})),
-    test::bvh_case_name);
+INSTANTIATE_TEST_SUITE_P(AllIsasIntersectorsWidths, BvhTraversal,
+                         ::testing::ValuesIn(test::bvh_cases({std::begin(kAllIntersectors),
+                                                              std::end(kAllIntersectors)})),
+                         test::bvh_case_name);
 
 }  // namespace
 }  // namespace rayvec

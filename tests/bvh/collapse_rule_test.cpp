@@ -37,9 +37,9 @@ double recomputed_cost(const WideBvh& bvh) {
 
 double cost_of(const BinaryBvh& bin, int width, CollapseRule rule) {
   const WideBvh bvh(bin, width, rule);
-  const double expected = width == 4    ? recomputed_cost<4>(bvh)
-                          : width == 8  ? recomputed_cost<8>(bvh)
-                                        : recomputed_cost<16>(bvh);
+  const double expected = width == 4   ? recomputed_cost<4>(bvh)
+                          : width == 8 ? recomputed_cost<8>(bvh)
+                                       : recomputed_cost<16>(bvh);
   EXPECT_NEAR(bvh.sah_node_cost(), expected, 1e-9 * expected) << "width " << width;
   return bvh.sah_node_cost();
 }
@@ -67,8 +67,8 @@ std::vector<Case> cases() {
 TEST(CollapseRule, SahNodeCostIsTheSumOfTheNodeBoxAreas) {
   const BinaryBvh bin = build_binned_sah(test::sphere(2.0f, 20, 40));
   for (int width : {4, 8, 16})
-    for (CollapseRule rule : {CollapseRule::largest_area, CollapseRule::most_triangles,
-                              CollapseRule::lower_sah_cost})
+    for (CollapseRule rule :
+         {CollapseRule::largest_area, CollapseRule::most_triangles, CollapseRule::lower_sah_cost})
       EXPECT_GT(cost_of(bin, width, rule), 0.0);
 }
 

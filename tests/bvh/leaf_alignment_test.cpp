@@ -87,7 +87,8 @@ TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
   }
   EXPECT_EQ(default_bvh_width(Isa::avx512, 100),
             default_bvh_width(Isa::avx512, 100, cpu_features().vendor));  // this CPU's vendor
-  if (!isa_supported(Isa::avx512)) GTEST_SKIP() << "no AVX-512 on this CPU: the built-BvhAccelerator half is skipped";
+  if (!isa_supported(Isa::avx512))
+    GTEST_SKIP() << "no AVX-512 on this CPU: the built-BvhAccelerator half is skipped";
   const TriangleMesh big = test::random_soup(int(kWideNodeTriangles), 0.01f, 3);
   const BvhAccelerator bvh(big, TraceConfig{Isa::avx512, Intersector::mt});
   EXPECT_EQ(bvh.tree().width(), 16);

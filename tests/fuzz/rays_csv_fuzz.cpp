@@ -21,7 +21,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       if (r.dir.x == 0 && r.dir.y == 0 && r.dir.z == 0) __builtin_trap();
       if (!(r.tmin <= r.tmax)) __builtin_trap();
     }
-  } catch (const rayvec::InputError&) {
-  }
+  } catch (const rayvec::InputError&) {}
   return 0;
 }

@@ -19,14 +19,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     return true;
   }();
   (void)model_written;
-  const std::string path = rayvec::fuzz::write_scratch(
-      "scene.json", std::string_view(reinterpret_cast<const char*>(data), size));
+  const std::string path =
+      rayvec::fuzz::write_scratch("scene.json", std::string_view(reinterpret_cast<const char*>(data), size));
   try {
     const rayvec::Scene scene = rayvec::load_scene_json(path);
     const auto& c = scene.camera;
     if (c.width < 1 || c.width > 16384 || c.height < 1 || c.height > 16384) __builtin_trap();
     if (scene.triangle_material.size() != scene.mesh.size()) __builtin_trap();
-  } catch (const rayvec::InputError&) {
-  }
+  } catch (const rayvec::InputError&) {}
   return 0;
 }

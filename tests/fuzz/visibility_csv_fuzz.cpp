@@ -16,8 +16,7 @@ void faces(std::string_view text, std::size_t vertex_count) {
     for (const auto& f : rayvec::parse_faces_csv(text, "meshes.csv", vertex_count))
       for (uint32_t i : f)
         if (i >= vertex_count) __builtin_trap();
-  } catch (const rayvec::InputError&) {
-  }
+  } catch (const rayvec::InputError&) {}
 }
 
 }  // namespace
@@ -26,8 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
     faces(text, rayvec::parse_verts_csv(text, "verts.csv").size());
-  } catch (const rayvec::InputError&) {
-  }
+  } catch (const rayvec::InputError&) {}
   faces(text, size ? data[0] : 0);
   return 0;
 }

@@ -41,7 +41,7 @@ TEST(ImageIo, PngIsSrgbEncoded8Bit) {
   const std::string dir = test::temp_dir("png");
   Image img(2, 1, {"R", "G", "B"});
   img.at(0, 0, 0) = 0.2158605f;  // sRGB-encoded 128/255
-  img.at(1, 0, 1) = 2.0f;       // clamped to 1
+  img.at(1, 0, 1) = 2.0f;        // clamped to 1
   write_image(dir + "/a.png", img);
   const Image back = read_image(dir + "/a.png");
   ASSERT_EQ(back.nchannels(), 3);

@@ -49,8 +49,10 @@ TEST(FuzzRegressions, TextureNameTooLongForTheFileSystemIsAWarning) {
   test::write_file(dir + "/m.mtl", "newmtl a\nKd 1 1 1\nmap_Kd " + name + ".png\n");
   const ObjModel model = load_obj(dir + "/m.obj");
   ASSERT_EQ(model.warnings.size(), 1u);
-  EXPECT_NE(model.warnings[0].find("texture " + dir + "/" + name + ".png cannot be looked up: File name too long"),
-            std::string::npos) << model.warnings[0];
+  EXPECT_NE(
+      model.warnings[0].find("texture " + dir + "/" + name + ".png cannot be looked up: File name too long"),
+      std::string::npos)
+      << model.warnings[0];
   const auto r = test::run_cli("render '" + dir + "/m.obj' -o '" + dir + "/out.png' --width 8 --height 8");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find(name + ".png: cannot read"), std::string::npos) << r.err;

@@ -50,7 +50,8 @@ TEST(TextFile, RegularFileOverTheLimitIsRefusedBeforeReading) {
   InputLimit limit("1");
   const std::string message = error_of(dir + "/big.csv");
   EXPECT_NE(message.find("big.csv: is larger than the 1 MB input limit; set RAYVEC_MAX_INPUT_MB"),
-            std::string::npos) << message;
+            std::string::npos)
+      << message;
   EXPECT_EQ(read_text_file(dir + "/small.csv").size(), 900000u);
 }
 
@@ -62,8 +63,7 @@ TEST(TextFile, StreamOverTheLimitStopsAtTheLimit) {
   std::thread writer([&] {
     const int fd = open(fifo.c_str(), O_WRONLY);
     const std::string line = "0,0,0,0,0,1\n";
-    while (fd >= 0 && write(fd, line.data(), line.size()) > 0) {
-    }
+    while (fd >= 0 && write(fd, line.data(), line.size()) > 0) {}
     if (fd >= 0) close(fd);
   });
   std::string message;

@@ -51,23 +51,20 @@ TEST(VisibilityCsv, ReadsIndicesWrittenAsFloats) {
 TEST(VisibilityCsv, BadIndicesNameFileAndLine) {
   EXPECT_NE(faces_error("0,1,2\n0,1.5,2\n", 3).find("meshes.csv:2: field 2 (1.5) is not an integer"),
             std::string::npos);
-  EXPECT_NE(faces_error("0,1,-1\n", 3).find("meshes.csv:1: field 3 (-1) is a negative"),
-            std::string::npos);
-  EXPECT_NE(faces_error("\n0,1,3\n", 3).find("meshes.csv:2: field 3 (3) is out of range: the vertex file has 3 rows"),
+  EXPECT_NE(faces_error("0,1,-1\n", 3).find("meshes.csv:1: field 3 (-1) is a negative"), std::string::npos);
+  EXPECT_NE(faces_error("\n0,1,3\n", 3)
+                .find("meshes.csv:2: field 3 (3) is out of range: the vertex file has 3 rows"),
             std::string::npos);
   EXPECT_NE(faces_error("nan,1,2\n", 3).find("meshes.csv:1: field 1 (nan) is not an integer"),
             std::string::npos);
-  EXPECT_NE(faces_error("0,1\n", 3).find("meshes.csv:1: found 2 fields, expected 3"),
-            std::string::npos);
+  EXPECT_NE(faces_error("0,1\n", 3).find("meshes.csv:1: found 2 fields, expected 3"), std::string::npos);
   EXPECT_NE(faces_error("0,1,two\n", 3).find("meshes.csv:1: field 3 'two' is not a number"),
             std::string::npos);
 }
 
 TEST(VisibilityCsv, BadVertexRowsNameFileAndLine) {
-  EXPECT_NE(verts_error("0,0,0\n1,2\n").find("verts.csv:2: found 2 fields, expected 3"),
-            std::string::npos);
-  EXPECT_NE(verts_error("0,0,zero\n").find("verts.csv:1: field 3 'zero' is not a number"),
-            std::string::npos);
+  EXPECT_NE(verts_error("0,0,0\n1,2\n").find("verts.csv:2: found 2 fields, expected 3"), std::string::npos);
+  EXPECT_NE(verts_error("0,0,zero\n").find("verts.csv:1: field 3 'zero' is not a number"), std::string::npos);
 }
 
 }  // namespace

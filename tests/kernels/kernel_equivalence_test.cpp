@@ -84,7 +84,8 @@ Scene sphere_scene() {
       s.mesh.triangles.push_back({at(r, k), at(r + 1, k), at(r + 1, k + 1)});
       s.mesh.triangles.push_back({at(r, k), at(r + 1, k + 1), at(r, k + 1)});
     }
-  for (int k = 0; k < segments; ++k) s.mesh.triangles.push_back({at(rings - 1, k), south, at(rings - 1, k + 1)});
+  for (int k = 0; k < segments; ++k)
+    s.mesh.triangles.push_back({at(rings - 1, k), south, at(rings - 1, k + 1)});
   SplitMix64 rng(23);
   for (int i = 0; i < 3000; ++i) {
     const Vec3f inside = random_point(rng, -0.5f, 0.5f);
@@ -115,7 +116,8 @@ Scene grid_scene() {
   SplitMix64 rng(5);
   for (int k = 0; k < 2000; ++k) {
     const float a = float(1 + k % (n - 1)) / n, b = 0.05f + 0.9f * rng.unit_float();
-    const Vec3f target = k % 3 == 0 ? Vec3f{a, b, 0.5f} : (k % 3 == 1 ? Vec3f{b, a, 0.5f} : Vec3f{b, b, 0.5f});
+    const Vec3f target =
+        k % 3 == 0 ? Vec3f{a, b, 0.5f} : (k % 3 == 1 ? Vec3f{b, a, 0.5f} : Vec3f{b, b, 0.5f});
     const Vec3f o = random_point(rng, 0.0f, 1.0f) + Vec3f{0, 0, 1.0f};
     s.rays.push_back(Ray{o, target - o});
   }
@@ -168,7 +170,8 @@ class KernelEquivalence : public ::testing::TestWithParam<Param> {
       const Hit &a = ref[i], &b = got[i];
       hits += a.hit();
       // any-hit agrees with closest hit of the same kernels
-      EXPECT_EQ(k.occluded(soa.arrays(), 0, soa.size(), s.rays[i], nullptr), b.hit()) << s.name << " ray " << i;
+      EXPECT_EQ(k.occluded(soa.arrays(), 0, soa.size(), s.rays[i], nullptr), b.hit())
+          << s.name << " ray " << i;
       if (exact) {
         ASSERT_EQ(a.tri, b.tri) << s.name << " ray " << i;
         if (a.hit()) {

@@ -85,10 +85,11 @@ TEST_P(MollerTrumbore, ParallelRayMisses) {
 
 TEST_P(MollerTrumbore, DegenerateTriangleNeverHitsAndGivesNoNan) {
   TriangleMesh m;
-  m.add_triangle({0, 0, 1}, {1, 1, 1}, {2, 2, 1});     // collinear
-  m.add_triangle({0, 0, 1}, {0, 0, 1}, {1, 0, 1});     // repeated vertex
+  m.add_triangle({0, 0, 1}, {1, 1, 1}, {2, 2, 1});                    // collinear
+  m.add_triangle({0, 0, 1}, {0, 0, 1}, {1, 0, 1});                    // repeated vertex
   m.add_triangle({0.5f, 0.5f, 1}, {0.5f, 0.5f, 1}, {0.5f, 0.5f, 1});  // a point
-  for (const Ray& r : {Ray{{1, 1, 0}, {0, 0, 1}}, Ray{{0.5f, 0, 0}, {0, 0, 1}}, Ray{{0.5f, 0.5f, 0}, {0, 0, 1}}}) {
+  for (const Ray& r :
+       {Ray{{1, 1, 0}, {0, 0, 1}}, Ray{{0.5f, 0, 0}, {0, 0, 1}}, Ray{{0.5f, 0.5f, 0}, {0, 0, 1}}}) {
     const Hit hit = closest(m, r);
     EXPECT_EQ(hit.tri, -1);
     EXPECT_FALSE(std::isnan(hit.t));
@@ -136,11 +137,9 @@ std::vector<Case> all_cases() {
   return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(AllIsas, MollerTrumbore, ::testing::ValuesIn(all_cases()),
-                         [](const auto& info) {
-                           return std::string(isa_name(info.param.isa)) + "_" +
-                                  intersector_name(info.param.intersector);
-                         });
+INSTANTIATE_TEST_SUITE_P(AllIsas, MollerTrumbore, ::testing::ValuesIn(all_cases()), [](const auto& info) {
+  return std::string(isa_name(info.param.isa)) + "_" + intersector_name(info.param.intersector);
+});
 
 }  // namespace
 }  // namespace rayvec

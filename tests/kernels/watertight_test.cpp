@@ -120,8 +120,8 @@ TEST(Watertight, VertexRaysFromInsideAClosedSphereNeverEscape) {
           }
           std::size_t escaped = 0;
           for (const Ray& r : rays) escaped += !accel->closest(r).hit();
-          EXPECT_EQ(escaped, 0u) << accel_name(kind) << " " << isa_name(isa) << " "
-                                 << intersector_name(in) << " centre.x " << centre.x;
+          EXPECT_EQ(escaped, 0u) << accel_name(kind) << " " << isa_name(isa) << " " << intersector_name(in)
+                                 << " centre.x " << centre.x;
         }
   }
 }

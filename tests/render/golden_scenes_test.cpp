@@ -55,8 +55,8 @@ TEST(GoldenScenes, EverySceneMatchesItsReferenceOnEveryIsa) {
 TEST(GoldenScenes, CompareCatchesAWrongImage) {
   const std::string dir = test::temp_dir("golden_wrong");
   const std::string out = render_small("reflection", best_isa(), dir);
-  const auto cmp = run_cli("compare '" + reference("shadows") + "' '" + out +
-                           "' --max-rmse 0.01 --max-pixel 0.25");
+  const auto cmp =
+      run_cli("compare '" + reference("shadows") + "' '" + out + "' --max-rmse 0.01 --max-pixel 0.25");
   EXPECT_EQ(cmp.status, 1) << cmp.out;
   EXPECT_NE(cmp.out.find("rmse"), std::string::npos);
 }
@@ -70,21 +70,30 @@ long ray_count(const std::string& json, const std::string& kind) {
 
 TEST(GoldenScenes, ScenesSpawnOnlyTheRaysTheirMaterialsNeed) {
   const std::string dir = test::temp_dir("effects");
-  struct Expect { const char* scene; bool reflection, refraction; };
+  struct Expect {
+    const char* scene;
+    bool reflection, refraction;
+  };
   for (const Expect e : {Expect{"shadows", false, false}, Expect{"cornell_box", false, false},
                          Expect{"reflection", true, false}, Expect{"refraction", true, true}}) {
     SCOPED_TRACE(e.scene);
     const std::string stats = dir + "/" + e.scene + ".json";
-    const auto r = run_cli("render '" + scene(e.scene) + "' -o '" + dir + "/x.png' --width 48 "
-                           "--height 36 --spp 1 --quiet --stats-json '" + stats + "'");
+    const auto r = run_cli("render '" + scene(e.scene) + "' -o '" + dir +
+                           "/x.png' --width 48 "
+                           "--height 36 --spp 1 --quiet --stats-json '" +
+                           stats + "'");
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string json = test::read_file(stats);
     EXPECT_EQ(ray_count(json, "primary"), 48 * 36);
     EXPECT_GT(ray_count(json, "shadow"), 0);
-    if (e.reflection) EXPECT_GT(ray_count(json, "reflection"), 0);
-    else EXPECT_EQ(ray_count(json, "reflection"), 0);
-    if (e.refraction) EXPECT_GT(ray_count(json, "refraction"), 0);
-    else EXPECT_EQ(ray_count(json, "refraction"), 0);
+    if (e.reflection)
+      EXPECT_GT(ray_count(json, "reflection"), 0);
+    else
+      EXPECT_EQ(ray_count(json, "reflection"), 0);
+    if (e.refraction)
+      EXPECT_GT(ray_count(json, "refraction"), 0);
+    else
+      EXPECT_EQ(ray_count(json, "refraction"), 0);
     EXPECT_NE(json.find("\"seconds\""), std::string::npos);
   }
 }

@@ -48,7 +48,10 @@ TEST(OffsetRay, SpawnedRaysNeverReHitTheirSurfaceAtAnyScale) {
         const Vec3f n = normalize(cross(e1, e2));
         for (int k = 0; k < 64; ++k) {
           float a = bary(rng), b = bary(rng);
-          if (a + b > 1) { a = 1 - a; b = 1 - b; }
+          if (a + b > 1) {
+            a = 1 - a;
+            b = 1 - b;
+          }
           const Vec3f p = v0 + e1 * a + e2 * b;
           // Leave on either side, as reflection (same side) and refraction (other side) rays do.
           const Vec3f side = (k % 2) ? n : -n;

@@ -26,7 +26,8 @@ TEST(RenderBudget, RefusesSizesOutsideTheLimits) {
     const std::string m = message_of(scene, 3, 0);
     EXPECT_NE(m.find("s.json: image size " + std::to_string(w) + "x" + std::to_string(h) +
                      " is outside 1..16384 pixels a side"),
-              std::string::npos) << m;
+              std::string::npos)
+        << m;
   }
   scene.camera.width = scene.camera.height = 16384;
   EXPECT_EQ(message_of(scene, 3, 0), "");  // 0 = memory unknown: only the size is checked
@@ -43,7 +44,8 @@ TEST(RenderBudget, RefusesAFramebufferBeyondAvailableMemory) {
   const std::string m = message_of(scene, 9, need - 1);
   EXPECT_NE(m.find("s.json: a 1000x500 image with 9 channels needs 0.04 GB of memory, but only "
                    "0.04 GB is available; lower --width/--height or drop --aov channels"),
-            std::string::npos) << m;
+            std::string::npos)
+      << m;
 }
 
 TEST(RenderBudget, ReadsAvailableMemory) {

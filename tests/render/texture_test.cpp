@@ -28,10 +28,11 @@ TEST(Texture, MapKdColoursTheSurfaceByTextureCoordinates) {
                    " \"fov_y\": 60, \"width\": 40, \"height\": 20 },"
                    " \"background\": [0, 0, 0], \"ambient\": [0, 0, 0],"
                    " \"lights\": [ { \"type\": \"directional\", \"direction\": [0, 0, -1],"
-                   " \"irradiance\": [" + std::to_string(pi) + ", " + std::to_string(pi) + ", " +
-                       std::to_string(pi) + "] } ],"
-                   " \"objects\": [ { \"obj\": \"quad.obj\" } ],"
-                   " \"render\": { \"spp\": 1 } }");
+                   " \"irradiance\": [" +
+                       std::to_string(pi) + ", " + std::to_string(pi) + ", " + std::to_string(pi) +
+                       "] } ],"
+                       " \"objects\": [ { \"obj\": \"quad.obj\" } ],"
+                       " \"render\": { \"spp\": 1 } }");
   const auto r = test::run_cli("render '" + dir + "/scene.json' -o '" + dir + "/out.exr' --quiet");
   ASSERT_EQ(r.status, 0) << r.err;
   const Image img = read_image(dir + "/out.exr");

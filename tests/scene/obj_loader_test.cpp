@@ -118,15 +118,14 @@ TEST(ObjLoader, NonFiniteVertexIsRejectedWithItsLine) {
 
 TEST(ObjLoader, FaceIndexOutOfRangeIsRejectedWithItsLine) {
   const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  EXPECT_NE(error_of(tri + "f 1 2 3\nf 1 2 9\n").find(":5: face vertex index 9 is out of range: the file defines 3 vertices"),
+  EXPECT_NE(error_of(tri + "f 1 2 3\nf 1 2 9\n")
+                .find(":5: face vertex index 9 is out of range: the file defines 3 vertices"),
             std::string::npos)
       << error_of(tri + "f 1 2 9\n");
-  EXPECT_NE(error_of(tri + "f 1 2 3 7\n").find(":4: face vertex index 7 is out of range"),
-            std::string::npos);
+  EXPECT_NE(error_of(tri + "f 1 2 3 7\n").find(":4: face vertex index 7 is out of range"), std::string::npos);
   EXPECT_NE(error_of(tri + "f -1 -2 -4\n").find(":4: face corner 3: vertex index '-4' is out of range"),
             std::string::npos);
-  EXPECT_NE(error_of(tri + "f 0 1 2\n").find(":4: face corner 1: vertex index '0' is 0"),
-            std::string::npos);
+  EXPECT_NE(error_of(tri + "f 0 1 2\n").find(":4: face corner 1: vertex index '0' is 0"), std::string::npos);
   EXPECT_NE(error_of(tri + "vn 0 0 1\nf 1//1 2//2 3//1\n").find(":5: face normal index 2 is out of range"),
             std::string::npos);
   EXPECT_NE(error_of(tri + "f 1 2\n").find(":4: a face needs at least 3 corners, found 2"),

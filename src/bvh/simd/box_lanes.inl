@@ -51,10 +51,21 @@ struct BoxPrepare {
   static RAYVEC_INLINE ForwardRay prepare_forward(const float o[3], const float rdir[3], const int near[3],
                                                   float eps) {
     const float dn = 1.0f - eps, up = 1.0f + eps;
-    return {V::broadcast(o[0]), V::broadcast(o[1]), V::broadcast(o[2]),
-            V::broadcast(rdir[0] * dn), V::broadcast(rdir[1] * dn), V::broadcast(rdir[2] * dn),
-            V::broadcast(rdir[0] * up), V::broadcast(rdir[1] * up), V::broadcast(rdir[2] * up),
-            near[0], near[1], near[2], far_row(near[0]), far_row(near[1]), far_row(near[2])};
+    return {V::broadcast(o[0]),
+            V::broadcast(o[1]),
+            V::broadcast(o[2]),
+            V::broadcast(rdir[0] * dn),
+            V::broadcast(rdir[1] * dn),
+            V::broadcast(rdir[2] * dn),
+            V::broadcast(rdir[0] * up),
+            V::broadcast(rdir[1] * up),
+            V::broadcast(rdir[2] * up),
+            near[0],
+            near[1],
+            near[2],
+            far_row(near[0]),
+            far_row(near[1]),
+            far_row(near[2])};
   }
 
   static RAYVEC_INLINE BoxHull<V> prepare_hull(const PacketHull& h) {
@@ -74,9 +85,18 @@ struct BoxPrepare {
   }
 
   static RAYVEC_INLINE RayData prepare(const float o[3], const float rdir[3], const int near[3]) {
-    return {V::broadcast(o[0]), V::broadcast(o[1]), V::broadcast(o[2]),
-            V::broadcast(rdir[0]), V::broadcast(rdir[1]), V::broadcast(rdir[2]),
-            near[0], near[1], near[2], far_row(near[0]), far_row(near[1]), far_row(near[2])};
+    return {V::broadcast(o[0]),
+            V::broadcast(o[1]),
+            V::broadcast(o[2]),
+            V::broadcast(rdir[0]),
+            V::broadcast(rdir[1]),
+            V::broadcast(rdir[2]),
+            near[0],
+            near[1],
+            near[2],
+            far_row(near[0]),
+            far_row(near[1]),
+            far_row(near[2])};
   }
 };
 
@@ -109,7 +129,8 @@ struct BoxRows {
   static RAYVEC_INLINE unsigned hits_hull(const float* b, const BoxHull<V>& h, V tmax) {
     V lo = h.tmin, hi = tmax;
     for (int a = 0; a < 3; ++a) {
-      const V bn = V::load_aligned(b + long(h.near[a]) * Stride), bf = V::load_aligned(b + long(h.far[a]) * Stride);
+      const V bn = V::load_aligned(b + long(h.near[a]) * Stride),
+              bf = V::load_aligned(b + long(h.far[a]) * Stride);
       lo = vmax(lo, vmin(fmsub(bn, h.nr_lo[a], h.kn_hi[a]), fmsub(bn, h.nr_hi[a], h.kn_hi[a])));
       hi = vmin(hi, vmax(fmsub(bf, h.fr_lo[a], h.kf_lo[a]), fmsub(bf, h.fr_hi[a], h.kf_lo[a])));
     }
@@ -117,8 +138,8 @@ struct BoxRows {
   }
 
   // Bit k set when child k's box overlaps [tmin, tmax]; dist[k] = its entry distance.
-  static RAYVEC_INLINE unsigned hits(const float* b, const BoxRay<V>& r, float tmin, float tmax,
-                                     float eps, float* dist) {
+  static RAYVEC_INLINE unsigned hits(const float* b, const BoxRay<V>& r, float tmin, float tmax, float eps,
+                                     float* dist) {
     const V tnx = (V::load_aligned(b + long(r.nx) * Stride) - r.ox) * r.rx;
     const V tny = (V::load_aligned(b + long(r.ny) * Stride) - r.oy) * r.ry;
     const V tnz = (V::load_aligned(b + long(r.nz) * Stride) - r.oz) * r.rz;
@@ -156,7 +177,8 @@ struct BoxLanes<V, Children, std::integer_sequence<int, K...>> : BoxPrepare<V> {
   static_assert(N % V::W == 0, "a node holds whole registers of children");
   static RAYVEC_INLINE unsigned hits_forward(const float (*b)[N], const BoxForwardRay<V>& r, float tmin,
                                              float tmax, float* dist) {
-    return (... | (BoxRows<V, N>::hits_forward(b[0] + K * V::W, r, tmin, tmax, dist + K * V::W) << (K * V::W)));
+    return (... |
+            (BoxRows<V, N>::hits_forward(b[0] + K * V::W, r, tmin, tmax, dist + K * V::W) << (K * V::W)));
   }
   static RAYVEC_INLINE unsigned hits(const float (*b)[N], const BoxRay<V>& r, float tmin, float tmax,
                                      float eps, float* dist) {

@@ -22,10 +22,17 @@ struct PacketLanesBase {
   // From SoA arrays of P floats: o[0..2], rdir[0..2], tmin, tmax.
   static RAYVEC_INLINE Self load(const float* const soa[8]) {
     Self k;
-    k.ox = V::load(soa[0]); k.oy = V::load(soa[1]); k.oz = V::load(soa[2]);
-    k.rx = V::load(soa[3]); k.ry = V::load(soa[4]); k.rz = V::load(soa[5]);
-    k.tmin = V::load(soa[6]); k.tmax = V::load(soa[7]);
-    k.nx = sign_mask(k.rx); k.ny = sign_mask(k.ry); k.nz = sign_mask(k.rz);
+    k.ox = V::load(soa[0]);
+    k.oy = V::load(soa[1]);
+    k.oz = V::load(soa[2]);
+    k.rx = V::load(soa[3]);
+    k.ry = V::load(soa[4]);
+    k.rz = V::load(soa[5]);
+    k.tmin = V::load(soa[6]);
+    k.tmax = V::load(soa[7]);
+    k.nx = sign_mask(k.rx);
+    k.ny = sign_mask(k.ry);
+    k.nz = sign_mask(k.rz);
     return k;
   }
   RAYVEC_INLINE void set_tmax(const float* t) { tmax = V::load(t); }
@@ -35,8 +42,7 @@ struct PacketLanesBase {
   // Lanes (within `active`) whose ray overlaps child k's box of a node with N children; tn receives
   // each lane's entry distance.
   template <int N>
-  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float eps,
-                              float* tn_out) const {
+  RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float eps, float* tn_out) const {
     const V lx = V::broadcast(b[0][k]), ly = V::broadcast(b[1][k]), lz = V::broadcast(b[2][k]);
     const V hx = V::broadcast(b[3][k]), hy = V::broadcast(b[4][k]), hz = V::broadcast(b[5][k]);
     const V tnx = (select(nx, lx, hx) - ox) * rx;
@@ -71,7 +77,7 @@ template <class V, bool Uniform>
 struct PacketForward {
   V nrx, nry, nrz, frx, fry, frz, knx, kny, knz, kfx, kfy, kfz, tmin, tmax;
   typename V::Mask sx, sy, sz;  // lanes whose direction is negative: near plane hi, far plane lo
-  int nx, ny, nz, fx, fy, fz;    // Uniform: the bounds rows of the near and far planes
+  int nx, ny, nz, fx, fy, fz;   // Uniform: the bounds rows of the near and far planes
 
   // From SoA arrays of P floats: o[0..2], rdir[0..2], tmin, tmax; neg[a]: the lanes with
   // rdir[a] < 0 (Uniform: none or all of the active lanes).
@@ -91,9 +97,15 @@ struct PacketForward {
     }
     k.tmin = V::load(soa[6]);
     k.tmax = V::load(soa[7]);
-    k.sx = mask_from_bits(V{}, neg[0]); k.sy = mask_from_bits(V{}, neg[1]); k.sz = mask_from_bits(V{}, neg[2]);
-    k.nx = neg[0] ? 3 : 0; k.ny = neg[1] ? 4 : 1; k.nz = neg[2] ? 5 : 2;
-    k.fx = neg[0] ? 0 : 3; k.fy = neg[1] ? 1 : 4; k.fz = neg[2] ? 2 : 5;
+    k.sx = mask_from_bits(V{}, neg[0]);
+    k.sy = mask_from_bits(V{}, neg[1]);
+    k.sz = mask_from_bits(V{}, neg[2]);
+    k.nx = neg[0] ? 3 : 0;
+    k.ny = neg[1] ? 4 : 1;
+    k.nz = neg[2] ? 5 : 2;
+    k.fx = neg[0] ? 0 : 3;
+    k.fy = neg[1] ? 1 : 4;
+    k.fz = neg[2] ? 2 : 5;
     return k;
   }
   // p moved away from zero-crossing toward `dir` (+1 up, −1 down) by more than its rounding
@@ -132,13 +144,21 @@ struct PacketForward {
   RAYVEC_INLINE unsigned hits(const float (*b)[N], int k, unsigned active, float* tn_out) const {
     V bnx, bny, bnz, bfx, bfy, bfz;
     if constexpr (Uniform) {
-      bnx = V::broadcast(b[nx][k]); bny = V::broadcast(b[ny][k]); bnz = V::broadcast(b[nz][k]);
-      bfx = V::broadcast(b[fx][k]); bfy = V::broadcast(b[fy][k]); bfz = V::broadcast(b[fz][k]);
+      bnx = V::broadcast(b[nx][k]);
+      bny = V::broadcast(b[ny][k]);
+      bnz = V::broadcast(b[nz][k]);
+      bfx = V::broadcast(b[fx][k]);
+      bfy = V::broadcast(b[fy][k]);
+      bfz = V::broadcast(b[fz][k]);
     } else {
       const V lx = V::broadcast(b[0][k]), ly = V::broadcast(b[1][k]), lz = V::broadcast(b[2][k]);
       const V hx = V::broadcast(b[3][k]), hy = V::broadcast(b[4][k]), hz = V::broadcast(b[5][k]);
-      bnx = select(sx, lx, hx); bny = select(sy, ly, hy); bnz = select(sz, lz, hz);
-      bfx = select(sx, hx, lx); bfy = select(sy, hy, ly); bfz = select(sz, hz, lz);
+      bnx = select(sx, lx, hx);
+      bny = select(sy, ly, hy);
+      bnz = select(sz, lz, hz);
+      bfx = select(sx, hx, lx);
+      bfy = select(sy, hy, ly);
+      bfz = select(sz, hz, lz);
     }
     const V tnx = fmsub(bnx, nrx, knx), tny = fmsub(bny, nry, kny), tnz = fmsub(bnz, nrz, knz);
     const V tfx = fmsub(bfx, frx, kfx), tfy = fmsub(bfy, fry, kfy), tfz = fmsub(bfz, frz, kfz);

@@ -1,7 +1,8 @@
 // AVX2 packet lanes for bvh/packet_traversal.inl: 8 rays, one per ymm lane. The box tests are
 // packet_lanes.inl's over vfloat (PacketLanes8: any tmin; its Forward: tmin >= 0, one FMA a slab);
-// this file adds the packet's setup (the AoS → SoA transpose of its rays) and a lane reduction. One of the only files that include <immintrin.h>;
-// included only by *_avx2.cpp units after box_lanes_avx2.h, in namespace rayvec::avx2.
+// this file adds the packet's setup (the AoS → SoA transpose of its rays) and a lane reduction. One of the
+// only files that include <immintrin.h>; included only by *_avx2.cpp units after box_lanes_avx2.h, in
+// namespace rayvec::avx2.
 #pragma once
 #include <immintrin.h>
 
@@ -44,8 +45,8 @@ struct PacketLanes8 : PacketLanesBase<vfloat, PacketLanes8> {
     __m256 bad = _mm256_cmp_ps(_mm256_load_ps(rows[6]), _mm256_load_ps(rows[6]), _CMP_UNORD_Q);
     bad = _mm256_or_ps(bad, _mm256_cmp_ps(_mm256_load_ps(rows[7]), _mm256_load_ps(rows[7]), _CMP_UNORD_Q));
     for (int f = 0; f < 6; ++f)  // not |x| < inf: NaN or infinite
-      bad = _mm256_or_ps(bad,
-                         _mm256_cmp_ps(_mm256_andnot_ps(sign, _mm256_load_ps(rows[f])), inf, _CMP_NLT_UQ));
+      bad =
+          _mm256_or_ps(bad, _mm256_cmp_ps(_mm256_andnot_ps(sign, _mm256_load_ps(rows[f])), inf, _CMP_NLT_UQ));
     return lanes & ~unsigned(_mm256_movemask_ps(bad));
   }
   // The smallest of tn over `lanes` (nonzero).
