@@ -12,8 +12,9 @@
 #include <string>
 
 #include "bench/ray_tracer.h"
-#include "io/input_error.h"
 #include "geometry/triangle_mesh.h"
+#include "io/input_error.h"
+#include "platform/stopwatch.h"
 
 namespace rayvec {
 namespace {
@@ -44,7 +45,7 @@ class EmbreeTracer final : public RayTracer {
     rtcReleaseGeometry(geom);
     const auto t0 = std::chrono::steady_clock::now();
     rtcCommitScene(scene_);
-    build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    build_seconds = seconds_since(t0);
     if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) throw RuntimeError("Embree: scene build failed");
   }
   ~EmbreeTracer() override {
