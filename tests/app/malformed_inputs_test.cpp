@@ -185,12 +185,6 @@ TEST(MalformedInputs, BrokenCsvFilesNameTheLine) {
   EXPECT_TRUE(no_output(dir, "out.txt"));
 }
 
-// The render command is committed separately (renderer work, issue 4); until it is in the binary the
-// render cases skip instead of failing.
-bool render_available() {
-  return test::run_cli("render --help").out.find("Usage: rayvec render") != std::string::npos;
-}
-
 // Writes scene.json (with `json`) next to a valid m.obj and runs `render` into out.png.
 void expect_render_rejects(const std::string& name, const std::string& json, const std::string& message,
                            const std::string& extra_args = "") {
@@ -206,7 +200,6 @@ void expect_render_rejects(const std::string& name, const std::string& json, con
 const std::string kObjects = R"("objects": [{"obj": "m.obj"}])";
 
 TEST(MalformedInputs, SceneJsonOfTheWrongTypesIsRejected) {
-  if (!render_available()) GTEST_SKIP() << "no render command in this build";
   expect_render_rejects("json_trunc", "{" + kObjects + ", \"camera\": {\"width\": 6",
                         "s.json:1: invalid JSON");
   expect_render_rejects("json_array", "[1, 2]", "expected an object");
@@ -227,7 +220,6 @@ TEST(MalformedInputs, SceneJsonOfTheWrongTypesIsRejected) {
 }
 
 TEST(MalformedInputs, AbsurdImageSizesAndDepthsAreRejectedBeforeWork) {
-  if (!render_available()) GTEST_SKIP() << "no render command in this build";
   for (const std::string size : {"0", "-5", "1000000"})
     expect_render_rejects("json_size" + size, "{" + kObjects + R"(, "camera": {"width": )" + size + "}}",
                           "s.json:1: camera.width: must be between 1 and 16384");
@@ -251,7 +243,6 @@ TEST(MalformedInputs, UnwritableOutputIsExitOneAndCreatesNothing) {
     EXPECT_NE(r.err.find("cannot write " + out), std::string::npos) << r.err;
   }
   EXPECT_EQ(test::read_file(dir + "/m.obj"), kTri);  // untouched
-  if (!render_available()) return;
   for (const std::string& out : {std::string("/nonexistent/dir/x.png"), dir + "/m.obj/x.png"}) {
     const auto r = test::run_cli("render -q " + dir + "/m.obj --width 8 --height 8 -o '" + out + "'");
     EXPECT_EQ(r.status, 1) << out << ": " << r.err;

@@ -39,7 +39,7 @@ TEST(FuzzRegressions, JsonNumberOverflowIsAnInputError) {
 }
 
 TEST(FuzzRegressions, TextureNameTooLongForTheFileSystemIsAWarning) {
-  // fuzz_obj (06:49, 2026-11-22): a `map_Kd` name of more than 255 bytes made the throwing form of
+  // Found by fuzz_obj: a `map_Kd` name of more than 255 bytes made the throwing form of
   // std::filesystem::exists raise ENAMETOOLONG as an uncaught filesystem_error (abort). The texture
   // must be reported like a missing one: a warning from the loader, and an InputError (exit 2) from
   // the renderer, which needs the pixels.
