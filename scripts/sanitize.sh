@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds rayvec and its tests with AddressSanitizer + UndefinedBehaviorSanitizer (RelWithDebInfo,
-# any UB report is fatal) into build-sanitize/ and runs the whole test suite under them (530 tests,
-# about 9 minutes on 2 busy cores; no test needed a reduced size). Extra arguments go to ctest:
-# .ci/run passes -E / to skip the value-parameterized ISA x intersector instances (425 of them).
+# any UB report is fatal) into build-sanitize/ and runs the whole test suite under them (no test
+# needed a reduced size). Extra arguments go to ctest: .ci/run passes -E / to skip the
+# value-parameterized ISA x intersector instances, which are most of the suite.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${RAYVEC_SANITIZE_BUILD:-$root/build-sanitize}"
