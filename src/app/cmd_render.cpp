@@ -101,8 +101,7 @@ int run_render(RenderArgs& a) {
 
   ProgressBar bar(!a.quiet);
   const Image image = render(scene, *accel, settings, stats, bar.progress());
-  bar.update(1.0);
-  bar.finish();
+  bar.finish();  // render() has drawn it at 100 %
 
   t = std::chrono::steady_clock::now();
   write_image(a.output, image,
