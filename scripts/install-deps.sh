@@ -7,7 +7,8 @@ set -euo pipefail
 packages=(build-essential cmake pkg-config
           libtinyobjloader-dev libopenimageio-dev openimageio-tools libopenexr-dev
           libglm-dev nlohmann-json3-dev libcli11-dev
-          libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev clang-format)
+          libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev clang-format
+          assimp-testmodels)  # real-world OBJ/MTL files for tests/scene and tests/render (skipped without)
 for flag in "$@"; do
   case "$flag" in
     --with-embree) packages+=(libembree-dev) ;;

@@ -24,6 +24,8 @@ struct RenderArgs {
   double min_contribution = -1;
   bool stats = false, quiet = false;
   TraceOptions trace;
+  // Loading and the view of a scene without a camera (grouped: other option groups edit around it).
+  bool strict = false;
 };
 
 RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& output) {
@@ -80,7 +82,11 @@ int run_render(RenderArgs& a) {
   const TraceConfig config = resolve_trace_options(a.trace);
   const AccelKind kind = resolve_accel(a.trace);
   stats.load_seconds = seconds_since(t);
-  for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  for (const std::string& w : scene.warnings)
+    std::fprintf(stderr, "%s: %s\n", a.strict ? "error" : "warning", w.c_str());
+  if (a.strict && !scene.warnings.empty())
+    throw InputError(a.scene + ": " + std::to_string(scene.warnings.size()) +
+                     " problem(s) while loading, and --strict makes them errors");
 
   t = std::chrono::steady_clock::now();
   const auto accel = make_accelerator(kind, scene.mesh, config);
@@ -139,7 +145,9 @@ void register_render_command(CommandLine& cli) {
           .option("--aov", a.aov, "extra EXR channels, comma-separated: depth,normal,id")
           .flag("--stats", a.stats, "print ray counts per kind, rays/s and time per stage")
           .option("--stats-json", a.stats_json, "write the statistics as JSON to this file")
-          .flag("-q,--quiet", a.quiet, "print nothing but errors (and --stats)");
+          .flag("-q,--quiet", a.quiet, "print nothing but errors (and --stats)")
+          .flag("--strict", a.strict,
+                "treat every loading warning (missing texture, MTL value clamped, ...) as an error");
   add_trace_options(cmd, a.trace, /*with_accel=*/true);
   cmd.footer(
          "--intersector defaults to the scene's render.intersector, else mt.\n"

@@ -6,12 +6,12 @@
 #include <tiny_obj_loader.h>
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <system_error>
 
 #include "io/text_file.h"
 #include "io/input_error.h"
+#include "scene/mtl_file.h"
 #include "scene/obj_scan.h"
 
 namespace rayvec {
@@ -19,14 +19,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Reads `mtllib` files relative to the OBJ's directory and remembers each material's MTL directory,
-// since map_Kd paths are relative to the MTL file, not to the OBJ.
+// Reads `mtllib` files relative to the OBJ's directory through read_mtl_file (input limit, NUL
+// check, validation, texture look-up); tinyobjloader only learns the names, to number `usemtl`.
 class MtlReader : public tinyobj::MaterialReader {
  public:
-  explicit MtlReader(fs::path obj_dir) : obj_dir_(std::move(obj_dir)) {}
+  MtlReader(fs::path obj_dir, std::vector<std::string>& warnings)
+      : obj_dir_(std::move(obj_dir)), warnings_(warnings) {}
 
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
-                  std::map<std::string, int>* by_name, std::string* warn, std::string* err) override {
+                  std::map<std::string, int>* by_name, std::string* warn, std::string*) override {
     const fs::path mtl = obj_dir_ / name;
     // Only regular files: a stranger's `mtllib /dev/zero` (or a FIFO) would read forever.
     std::error_code ec;
@@ -35,47 +36,31 @@ class MtlReader : public tinyobj::MaterialReader {
         *warn += "material file " + mtl.string() + " is not a regular file; using default materials\n";
       return false;
     }
-    std::ifstream in(mtl);
-    if (!in) {
+    if (!fs::exists(mtl, ec)) {
       if (warn) *warn += "material file " + mtl.string() + " not found; using default materials\n";
       return false;
     }
-    tinyobj::LoadMtl(by_name, materials, &in, warn, err);
-    material_dirs.resize(materials->size(), mtl.parent_path());
+    for (Material& m : read_mtl_file(mtl.string(), warnings_)) {
+      const int index = static_cast<int>(materials->size());
+      by_name->emplace(m.name, index);
+      // tinyobjloader's `usemtl` reads only the first word of a name with spaces.
+      by_name->emplace(m.name.substr(0, m.name.find_first_of(" \t")), index);
+      tinyobj::material_t named;
+      named.name = m.name;
+      materials->push_back(named);
+      read.push_back(std::move(m));
+    }
     return true;
   }
 
-  std::vector<fs::path> material_dirs;  // per material: the directory of its MTL file
+  std::vector<Material> read;  // parallel to tinyobjloader's materials
 
  private:
   fs::path obj_dir_;
+  std::vector<std::string>& warnings_;
 };
 
 Vec3f vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
-
-Material convert(const tinyobj::material_t& m, const fs::path& mtl_dir, std::vector<std::string>& warnings) {
-  Material out;
-  out.name = m.name;
-  out.Ka = vec3(m.ambient);
-  out.Kd = vec3(m.diffuse);
-  out.Ks = vec3(m.specular);
-  out.Ke = vec3(m.emission);
-  out.Tf = vec3(m.transmittance);
-  out.Ns = m.shininess;
-  out.Ni = m.ior;
-  out.d = m.dissolve;
-  out.illum = m.illum;
-  if (!m.diffuse_texname.empty()) {
-    out.map_Kd = fs::absolute(mtl_dir / m.diffuse_texname).lexically_normal().string();
-    // The error_code form: a stranger's name can be too long for the file system (ENAMETOOLONG),
-    // which the throwing form reports as an exception instead of a missing file.
-    std::error_code ec;
-    if (!fs::exists(out.map_Kd, ec))
-      warnings.push_back("material '" + m.name + "': texture " + out.map_Kd +
-                         (ec ? " cannot be looked up: " + ec.message() : std::string(" not found")));
-  }
-  return out;
-}
 
 void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings) {
   std::istringstream lines(text);
@@ -97,16 +82,14 @@ ObjModel load_obj(const std::string& path) {
   std::vector<tinyobj::material_t> materials;
   std::string warn, err;
   std::istringstream in(text);
-  MtlReader mtl_reader(fs::path(path).parent_path());
+  ObjModel model;
+  MtlReader mtl_reader(fs::path(path).parent_path(), model.warnings);
   if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, true))
     throw InputError(path, 0, "cannot parse: " + err);
 
-  ObjModel model;
   split_warnings(warn, path, model.warnings);
   if (!err.empty()) split_warnings(err, path, model.warnings);  // e.g. MTL problems on success
-  mtl_reader.material_dirs.resize(materials.size(), fs::path(path).parent_path());
-  for (std::size_t i = 0; i < materials.size(); ++i)
-    model.materials.push_back(convert(materials[i], mtl_reader.material_dirs[i], model.warnings));
+  model.materials = std::move(mtl_reader.read);
 
   const auto nv = static_cast<int>(attrib.vertices.size() / 3);
   const auto nn = static_cast<int>(attrib.normals.size() / 3);

@@ -5,8 +5,10 @@
 #include <numbers>
 
 #include "image/image_io.h"
+#include "io/input_error.h"
 #include "rays/pinhole_camera.h"
 #include "scene/obj_loader.h"
+#include "scene/texture_path.h"
 
 namespace rayvec {
 
@@ -31,8 +33,22 @@ int32_t Scene::add_material(const Material& m) {
     for (std::size_t i = 0; i < materials.size() - 1; ++i)
       if (materials[i].map_Kd == m.map_Kd) texture = material_texture[i];
     if (texture < 0) {
-      textures.push_back(read_texture(m.map_Kd));
-      texture = static_cast<int32_t>(textures.size() - 1);
+      // A texture that cannot be used leaves the material with Kd alone: a warning, not a failure
+      // (`render --strict` makes it one).
+      std::string problem = texture_file_problem(m.map_Kd);
+      if (problem.empty()) {
+        try {
+          textures.push_back(read_texture(m.map_Kd));
+          texture = static_cast<int32_t>(textures.size() - 1);
+        } catch (const InputError& e) {
+          problem = std::string("cannot be decoded: ") + e.what();
+        }
+      }
+      if (!problem.empty()) {
+        warnings.push_back("material '" + m.name + "': texture " + m.map_Kd + " " + problem +
+                           "; drawn with Kd only");
+        materials.back().map_Kd.clear();
+      }
     }
   }
   material_texture.push_back(texture);

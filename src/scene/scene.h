@@ -74,7 +74,7 @@ struct Scene {
 
   // Appends a model's triangles (transformed to world space) and its materials with `override`
   // applied (triangles without a material get the MTL default material, overridden too) as one
-  // new object; map_Kd textures are read (InputError when unreadable).
+  // new object; map_Kd textures are read (one that cannot be used: a warning, the material keeps Kd).
   void add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override = {});
   // Appends one triangle with material `material` (index) — for scenes built in code.
   void add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material);

@@ -4,9 +4,16 @@
 // what is wrong, and leave no output file (neither the file nor an AtomicFile temporary).
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
+#include "image/image_io.h"
 #include "test_support.h"
 
 namespace rayvec {
@@ -151,8 +158,82 @@ TEST(MalformedInputs, MissingMtlAndTextureAreWarnings) {
   EXPECT_NE(r.err.find("material file /dev/zero is not a regular file"), std::string::npos) << r.err;
   r = hits(dir, dir + "/t.obj", dir + "/r.csv");
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.err.find("warning: material 'a': texture " + dir + "/missing.png not found"), std::string::npos)
+  EXPECT_NE(r.err.find("warning: " + dir + "/t.mtl:3: material 'a': texture 'missing.png' (" + dir +
+                       "/missing.png) not found; drawn with Kd only"),
+            std::string::npos)
       << r.err;
+}
+
+// Renders `mtl` (as m.mtl, material `a` on a triangle facing the default camera) to an EXR.
+test::CommandResult render_mtl(const std::string& dir, const std::string& mtl,
+                               const std::string& extra = "") {
+  test::write_file(dir + "/m.mtl", mtl);
+  test::write_file(dir + "/m.obj", "mtllib m.mtl\nusemtl a\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+  return test::run_cli("render -q " + dir + "/m.obj --width 24 --height 18 -o " + dir + "/out.exr " + extra);
+}
+
+int non_finite_pixels(const std::string& exr) {
+  const Image img = read_image(exr);
+  int bad = 0;
+  for (float v : img.pixels) bad += std::isfinite(v) ? 0 : 1;
+  return bad;
+}
+
+TEST(MalformedInputs, MtlValuesOutOfRangeAreClampedAndNoNanOrInfReachesTheImage) {
+  const std::string dir = test::temp_dir("malformed_mtl_values");
+  for (const std::string& mtl :
+       {std::string("newmtl a\nKd 0.5 0.5 0.5\nKs 1 1 1\nNi -1\nTf 1 1 1\nd 0.5\nillum 7\n"),
+        std::string("newmtl a\nKd 1e38 1e38 1e38\nillum 3\n"), std::string("newmtl a\nKs 1e38\nillum 3\n"),
+        std::string("newmtl a\nKd 1\nKs 1\nNs 1e38\nillum 2\n"),
+        std::string("newmtl a\nKe 3e38 0 0\nillum 1\n")}) {
+    const auto r = render_mtl(dir, mtl);
+    EXPECT_EQ(r.status, 0) << mtl << r.err;
+    EXPECT_NE(r.err.find(dir + "/m.mtl:"), std::string::npos) << mtl << ": the warning names the MTL line";
+    EXPECT_EQ(non_finite_pixels(dir + "/out.exr"), 0) << mtl;
+  }
+  // A value no float holds is an error naming the line; --strict makes the clamps errors.
+  auto r = render_mtl(dir, "newmtl a\nKd 1e39 0 0\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(dir + "/m.mtl:2: `Kd` value '1e39' is not a finite number"), std::string::npos)
+      << r.err;
+  r = render_mtl(dir, "newmtl a\nillum 11\n", "--strict");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(dir + "/m.mtl:2: material 'a': `illum 11` is not an MTL illumination model"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(MalformedInputs, TexturesThatNeverEndAreWarningsNotHangs) {
+  const std::string dir = test::temp_dir("malformed_mtl_devices");
+  ASSERT_EQ(mkfifo((dir + "/fifo.png").c_str(), 0600), 0);
+  for (const std::string tex : {"/dev/zero", "/dev/urandom", "fifo.png"}) {
+    const auto r = render_mtl(dir, "newmtl a\nKd 1 1 1\nmap_Kd " + tex + "\n");
+    EXPECT_EQ(r.status, 0) << tex << r.err;
+    EXPECT_NE(r.err.find("m.mtl:3: material 'a': texture '" + tex + "'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("is not a regular file; drawn with Kd only"), std::string::npos) << r.err;
+  }
+  std::filesystem::remove(dir + "/out.exr");
+  const auto r = render_mtl(dir, "newmtl a\nmap_Kd /dev/zero\n", "--strict");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(no_output(dir, "out.exr"));
+}
+
+TEST(MalformedInputs, MtlFilesHaveTheInputLimitAndTheNulCheck) {
+  const std::string dir = test::temp_dir("malformed_mtl_limits");
+  test::write_file(dir + "/m.obj", "mtllib m.mtl\n" + kTri);
+  {  // 200 MB, sparse: judged by its size before any byte is read
+    std::ofstream(dir + "/m.mtl").close();
+    ASSERT_EQ(truncate((dir + "/m.mtl").c_str(), 200000000), 0);
+  }
+  setenv("RAYVEC_MAX_INPUT_MB", "100", 1);  // the child inherits it
+  auto r = test::run_cli("render -q " + dir + "/m.obj --width 8 --height 8 -o " + dir + "/out.png");
+  unsetenv("RAYVEC_MAX_INPUT_MB");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("m.mtl: is larger than the 100 MB input limit"), std::string::npos) << r.err;
+  r = test::run_cli("render -q " + dir + "/m.obj --width 8 --height 8 -o " + dir + "/out.png");
+  EXPECT_EQ(r.status, 2) << r.err;  // all NUL bytes
+  EXPECT_NE(r.err.find("m.mtl:1: contains a NUL byte"), std::string::npos) << r.err;
+  EXPECT_TRUE(no_output(dir, "out.png"));
 }
 
 TEST(MalformedInputs, Utf8ByteOrderMarkIsIgnored) {
@@ -213,8 +294,10 @@ TEST(MalformedInputs, SceneJsonOfTheWrongTypesIsRejected) {
                         "lights[0].type: expected a string, got number");
   expect_render_rejects("json_obj", R"({"objects": [{"obj": 7}]})", "objects[0].obj: expected a string");
   expect_render_rejects("json_missing_obj", R"({"objects": [{"obj": "nope.obj"}]})", "nope.obj: cannot read");
+  // A missing texture is a warning (the material keeps Kd), an error under --strict.
   expect_render_rejects("json_texture",
-                        R"({"objects": [{"obj": "m.obj", "material": {"map_Kd": "nope.png"}}]})", "nope.png");
+                        R"({"objects": [{"obj": "m.obj", "material": {"map_Kd": "nope.png"}}]})",
+                        "nope.png not found", "--strict");
   expect_render_rejects("json_deep", std::string(100000, '[') + std::string(100000, ']'),
                         "expected an object");
 }

@@ -1,0 +1,62 @@
+#include "scene/texture_path.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "io/text_file.h"
+
+namespace rayvec {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool path_exists(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec);
+}
+
+fs::path absolute_normal(const fs::path& p) {
+  std::error_code ec;
+  const fs::path a = fs::absolute(p, ec);
+  return (ec ? p : a).lexically_normal();
+}
+
+}  // namespace
+
+std::string resolve_texture_path(const std::string& name, const std::string& mtl_dir) {
+  const fs::path dir(mtl_dir);
+  auto beside = [&](const fs::path& p) { return absolute_normal(p.is_absolute() ? p : dir / p); };
+  const fs::path literal = beside(name);
+  if (path_exists(literal)) return literal.string();
+  std::string slashed = name;
+  std::replace(slashed.begin(), slashed.end(), '\\', '/');
+  // `C:/models/a.jpg`: a drive letter means nothing here.
+  const bool drive = slashed.size() >= 2 && slashed[1] == ':';
+  const fs::path guess = drive ? fs::path(slashed.substr(2)) : fs::path(slashed);
+  const fs::path resolved = beside(guess);
+  if (path_exists(resolved)) return resolved.string();
+  const fs::path file_name = guess.filename();
+  if (!file_name.empty() && path_exists(dir / file_name)) return absolute_normal(dir / file_name).string();
+  return resolved.string();
+}
+
+std::string texture_file_problem(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec && !fs::exists(status)) {
+    if (ec == std::errc::no_such_file_or_directory || ec == std::errc::not_a_directory) return "not found";
+    return "cannot be looked up: " + ec.message();
+  }
+  if (!fs::is_regular_file(status)) return "is not a regular file";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "cannot be opened for reading";
+  const auto size = fs::file_size(path, ec);
+  if (!ec && size > max_input_bytes())
+    return "is larger than the " + std::to_string(max_input_bytes() / 1000000) +
+           " MB input limit (RAYVEC_MAX_INPUT_MB)";
+  return "";
+}
+
+}  // namespace rayvec

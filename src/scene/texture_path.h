@@ -1,0 +1,21 @@
+// Texture file names as MTL files in the wild write them, and the checks a texture passes before it
+// is decoded. Shared by every OBJ loader and by scene JSON's map_Kd.
+#pragma once
+#include <string>
+
+namespace rayvec {
+
+// The file `name` (as written after map_Kd, options and quotes already removed) refers to, for an
+// MTL file in directory `mtl_dir`: a relative name is relative to the MTL file; Windows separators
+// (`.\tex\a.jpg`) are read as `/` unless a file with the literal name exists; when the named file
+// does not exist but a file with its last component does in mtl_dir (an exporter's absolute path
+// from another machine, `C:\models\a.jpg`), that file. Returns an absolute, normalized path (the
+// best guess when nothing exists, for the message).
+std::string resolve_texture_path(const std::string& name, const std::string& mtl_dir);
+
+// Why the texture at `path` cannot be used, or "" when it can: it does not exist, cannot be looked
+// up, is not a regular file (a device such as /dev/zero or a FIFO would be read forever), cannot be
+// opened for reading, or is larger than the input limit (max_input_bytes, RAYVEC_MAX_INPUT_MB).
+std::string texture_file_problem(const std::string& path);
+
+}  // namespace rayvec
