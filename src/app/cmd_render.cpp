@@ -1,5 +1,6 @@
 // `rayvec render SCENE.json|MODEL.obj -o image.png|.exr`: the Whitted renderer's front end.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "platform/stopwatch.h"
 #include "render/effects.h"
 #include "render/renderer.h"
+#include "scene/default_view.h"
 #include "scene/scene.h"
 
 namespace rayvec {
@@ -26,6 +28,8 @@ struct RenderArgs {
   TraceOptions trace;
   // Loading and the view of a scene without a camera (grouped: other option groups edit around it).
   bool strict = false;
+  std::string view, eye, look_at, up;
+  double fov = 0;
 };
 
 RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& output) {
@@ -45,6 +49,50 @@ RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& outp
   if (output.size() < 4 || output.substr(output.size() - 4) != ".exr")
     throw InputError("--aov: extra channels need an .exr output (got " + output + ")");
   return aov;
+}
+
+// "X,Y,Z" of --eye, --look-at, --up.
+Vec3f parse_point(const std::string& text, const char* option) {
+  Vec3f p;
+  std::stringstream ss(text);
+  std::string item;
+  for (int k = 0; k < 3; ++k) {
+    std::size_t used = 0;
+    double v = 0;
+    bool ok = static_cast<bool>(std::getline(ss, item, ','));
+    try {
+      v = ok ? std::stod(item, &used) : 0;
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    if (!ok || used != item.size() || !std::isfinite(v) || std::fabs(v) > 1e30)
+      throw InputError(std::string(option) + ": expected three numbers X,Y,Z (e.g. 0,1.5,4), got '" + text +
+                       "'");
+    p[k] = static_cast<float>(v);
+  }
+  if (std::getline(ss, item))
+    throw InputError(std::string(option) + ": expected three numbers X,Y,Z, got '" + text + "'");
+  return p;
+}
+
+CameraOverrides camera_overrides(const RenderArgs& a) {
+  CameraOverrides o;
+  if (!a.view.empty()) o.view = parse_view(a.view);
+  if (!a.eye.empty()) o.eye = parse_point(a.eye, "--eye");
+  if (!a.look_at.empty()) o.look_at = parse_point(a.look_at, "--look-at");
+  if (!a.up.empty()) o.up = parse_point(a.up, "--up");
+  if (a.fov != 0) o.fov_y = static_cast<float>(a.fov);
+  return o;
+}
+
+// Pixels whose colour differs from the background: none means the camera saw no geometry.
+std::size_t non_background_pixels(const Image& image, Vec3f background) {
+  std::size_t n = 0;
+  const std::size_t channels = image.channels.size();
+  for (std::size_t i = 0; i + 2 < image.pixels.size(); i += channels)
+    n += image.pixels[i] != background.x || image.pixels[i + 1] != background.y ||
+         image.pixels[i + 2] != background.z;
+  return n;
 }
 
 // Command-line values win over the scene's "render" block; 0/-1/"" mean "not given".
@@ -75,6 +123,9 @@ int run_render(RenderArgs& a) {
   auto t = std::chrono::steady_clock::now();
   Scene scene = load_scene(a.scene);
   apply_overrides(a, scene);
+  const CameraOverrides view = camera_overrides(a);
+  // Framing depends on the image's aspect, so it is redone after --width/--height.
+  if (scene.default_camera || scene.default_light || view.any()) place_camera(scene, view);
   scene.render.aov = aov;
   const RenderSettings& settings = scene.render;
   if (a.trace.intersector.empty())
@@ -108,6 +159,11 @@ int run_render(RenderArgs& a) {
   ProgressBar bar(!a.quiet);
   const Image image = render(scene, *accel, settings, stats, bar.progress());
   bar.finish();  // render() has drawn it at 100 %
+  if (non_background_pixels(image, scene.background) == 0)
+    std::fprintf(stderr,
+                 "warning: %s: the image shows only the background: the camera sees no geometry "
+                 "(try the default view, --view iso, or check --eye/--look-at)\n",
+                 a.scene.c_str());
 
   t = std::chrono::steady_clock::now();
   write_image(a.output, image,
@@ -147,12 +203,23 @@ void register_render_command(CommandLine& cli) {
           .option("--stats-json", a.stats_json, "write the statistics as JSON to this file")
           .flag("-q,--quiet", a.quiet, "print nothing but errors (and --stats)")
           .flag("--strict", a.strict,
-                "treat every loading warning (missing texture, MTL value clamped, ...) as an error");
+                "treat every loading warning (missing texture, MTL value clamped, ...) as an error")
+          .option("--view", a.view,
+                  "frame the model from iso (front-right-above, the default without a scene camera), "
+                  "front, back, left, right, top or bottom")
+          .option("--eye", a.eye, "camera position X,Y,Z (replaces the scene's or the view's)")
+          .option("--look-at", a.look_at, "point looked at X,Y,Z (default: the model's centre)")
+          .option("--up", a.up, "camera up vector X,Y,Z (default 0,1,0; top/bottom views use -z/+z)")
+          .option("--fov", a.fov, "vertical field of view in degrees (0 = the scene's, else 45)");
   add_trace_options(cmd, a.trace, /*with_accel=*/true);
   cmd.footer(
          "--intersector defaults to the scene's render.intersector, else mt.\n"
+         "A bare OBJ (or a scene without \"camera\") is framed from the iso view so that its\n"
+         "bounding box fills the image, lit by a point light at the eye.\n"
          "Examples:\n"
          "  rayvec render scenes/whitted.json -o whitted.png\n"
+         "  rayvec render model.obj -o top.png --view top\n"
+         "  rayvec render model.obj -o close.png --eye 0,2,5 --look-at 0,1,0 --fov 30\n"
          "  rayvec render model.obj -o model.exr --aov depth,normal,id --spp 4 --stats")
       .run([] { return run_render(a); });
 }

@@ -27,6 +27,20 @@ BoxFraming<T> frame_box(const BBox& box, Vec3<T> toward_eye, T half_angle, T mar
 }
 
 template <typename T>
+T fit_points_distance(const Vec3f* points, std::size_t n, Vec3<T> center, const PinholeFrame<T>& frame,
+                      Vec3<T> toward_eye, T tan_half_x, T tan_half_y, T margin, T clearance) {
+  const T tx = tan_half_x / margin, ty = tan_half_y / margin;
+  T d = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3<T> rel = Vec3<T>(points[i]) - center;
+    // The point at depth (d − z) in front of the eye projects to (x, y)/(d − z) on the image plane.
+    const T x = std::abs(dot(rel, frame.right)), y = std::abs(dot(rel, frame.up)), z = dot(rel, toward_eye);
+    d = std::max({d, z + x / tx, z + y / ty, z + clearance});
+  }
+  return d;
+}
+
+template <typename T>
 T narrower_half_fov(T half_fov_y, T aspect) {
   return aspect < 1 ? std::atan(std::tan(half_fov_y) * aspect) : half_fov_y;
 }
@@ -37,6 +51,10 @@ template PinholeFrame<float> look_at_frame(Vec3f, Vec3f, Vec3f);
 template PinholeFrame<double> look_at_frame(Vec3d, Vec3d, Vec3d);
 template BoxFraming<float> frame_box(const BBox&, Vec3f, float, float);
 template BoxFraming<double> frame_box(const BBox&, Vec3d, double, double);
+template float fit_points_distance(const Vec3f*, std::size_t, Vec3f, const PinholeFrame<float>&, Vec3f, float,
+                                   float, float, float);
+template double fit_points_distance(const Vec3f*, std::size_t, Vec3d, const PinholeFrame<double>&, Vec3d,
+                                    double, double, double, double);
 template float narrower_half_fov(float, float);
 template double narrower_half_fov(double, double);
 

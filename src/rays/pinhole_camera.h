@@ -5,6 +5,8 @@
 // Templates over the scalar, instantiated for float (render, scene) and double (bench), so that each
 // caller keeps the precision its outputs are defined in; pure math, no GLM (the bench sits below it).
 #pragma once
+#include <cstddef>
+
 #include "geometry/bbox.h"
 #include "math/vec3.h"
 
@@ -45,6 +47,15 @@ struct BoxFraming {
 // eye still differs from the centre. Computed in T from the box's float corners.
 template <typename T>
 BoxFraming<T> frame_box(const BBox& box, Vec3<T> toward_eye, T half_angle, T margin);
+
+// The smallest distance d from `center` along `toward_eye` (unit) at which a pinhole camera looking
+// back at center with frame `frame` (look_at_frame(center + toward_eye, center, up)) sees every one
+// of the n points within tan_half_x / margin and tan_half_y / margin of its axis: the tight fit that
+// makes a model fill the image (frame_box fits the bounding sphere, smaller on screen). The eye
+// stays in front of every point by `clearance` (> 0) at least.
+template <typename T>
+T fit_points_distance(const Vec3f* points, std::size_t n, Vec3<T> center, const PinholeFrame<T>& frame,
+                      Vec3<T> toward_eye, T tan_half_x, T tan_half_y, T margin, T clearance);
 
 // The half-angle of the narrower side of an image whose vertical field of view is 2·half_fov_y and
 // whose aspect is width/height: half_fov_y for landscape and square images (aspect ≥ 1), else the

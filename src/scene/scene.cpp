@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "image/image_io.h"
 #include "io/input_error.h"
-#include "rays/pinhole_camera.h"
 #include "scene/obj_loader.h"
 #include "scene/texture_path.h"
 
@@ -119,27 +117,6 @@ std::pair<Vec3f, Vec3f> Scene::bounds() const {
     hi = max(hi, p);
   }
   return {lo, hi};
-}
-
-void frame_bounding_box(Scene& scene) {
-  const auto [lo, hi] = scene.bounds();
-  Camera& cam = scene.camera;
-  const float half_fov = 0.5f * cam.fov_y * std::numbers::pi_v<float> / 180.0f;
-  // The bounding sphere fits the narrower field of view, with a 10% margin, seen from slightly
-  // above along +z.
-  const float aspect = float(cam.width) / float(cam.height);
-  const BoxFraming<float> framing =
-      frame_box(BBox{lo, hi}, Vec3f{0.0f, 0.35f, 1.0f}, narrower_half_fov(half_fov, aspect), 1.1f);
-  cam.look_at = framing.center;
-  cam.eye = framing.eye;
-  cam.up = {0, 1, 0};
-  // One light at the eye with I/r² = π at the bounding sphere's near side, so a Lambertian surface
-  // there facing the camera reads about Kd (Kd/π · π).
-  const float near = std::max(framing.distance - framing.radius, 1e-30f);
-  const float intensity = std::numbers::pi_v<float> * near * near;
-  scene.lights = {Light{Light::Type::point, cam.eye, {0, -1, 0}, Vec3f{1, 1, 1} * intensity}};
-  scene.ambient = {0.05f, 0.05f, 0.05f};
-  scene.background = {0.0f, 0.0f, 0.0f};
 }
 
 }  // namespace rayvec

@@ -69,6 +69,9 @@ struct Scene {
   std::vector<std::array<std::array<float, 2>, 3>> corner_uv;
   std::vector<uint8_t> has_normals, has_uv;
   std::vector<std::string> warnings;
+  // The camera and lights are rayvec's defaults (default_view.h), not the file's: a bare OBJ, or a
+  // scene JSON without "camera" (default_camera) or without "lights" (default_light).
+  bool default_camera = false, default_light = false;
 
   std::size_t object_count() const { return object_count_; }
 
@@ -87,9 +90,8 @@ struct Scene {
   std::size_t object_count_ = 0;
 };
 
-// Frames the mesh's bounding box: the camera looks at its centre from the +z side (slightly above),
-// far enough for the bounding sphere to fit fov_y, and one point light sits at the eye, bright
-// enough for the nearest surfaces to read about 1. For `rayvec render MODEL.obj`.
+// A bare OBJ's camera and light (default_view.cpp): marks both as defaults, frames the mesh's bounding
+// box from the iso view with a point light at the eye (place_camera), ambient 0.05, black background.
 void frame_bounding_box(Scene& scene);
 
 // Loads `path`: a JSON scene (.json) or a bare Wavefront OBJ (.obj, framed by frame_bounding_box).

@@ -8,6 +8,7 @@
 
 #include "io/input_error.h"
 #include "io/text_file.h"
+#include "scene/default_view.h"
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
 
@@ -236,6 +237,10 @@ Scene load_scene_json(const std::string& path) {
         o.contains("material") ? read_material(r, o["material"], where + ".material") : MaterialOverride{};
     scene.add_object(load_obj(obj), t, m);
   }
+  // Without a camera or lights, rayvec's defaults (default_view.h), as for a bare OBJ.
+  scene.default_camera = !root.contains("camera");
+  scene.default_light = !root.contains("lights");
+  if (scene.default_camera || scene.default_light) place_camera(scene);
   return scene;
 }
 
