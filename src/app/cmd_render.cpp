@@ -129,7 +129,9 @@ int run_render(RenderArgs& a) {
   scene.render.aov = aov;
   const RenderSettings& settings = scene.render;
   if (a.trace.intersector.empty())
-    a.trace.intersector = settings.intersector.empty() ? TraceOptions{}.intersector : settings.intersector;
+    // Watertight by default: mt lets rays slip between the triangles of closed meshes, for a cost
+    // lost in the noise (see benchmarks.md#decision-render-defaults-to-watertight).
+    a.trace.intersector = settings.intersector.empty() ? "watertight" : settings.intersector;
   const TraceConfig config = resolve_trace_options(a.trace);
   const AccelKind kind = resolve_accel(a.trace);
   stats.load_seconds = seconds_since(t);
@@ -173,7 +175,7 @@ int run_render(RenderArgs& a) {
   stats.write_seconds = seconds_since(t);
 
   if (!a.quiet) std::printf("wrote %s (%.3f s)\n", a.output.c_str(), stats.render_seconds);
-  if (a.stats) std::printf("%s", stats.text().c_str());
+  if (a.stats) std::printf("intersector: %s\n%s", intersector_name(config.intersector), stats.text().c_str());
   if (!a.stats_json.empty()) {
     AtomicFile file(a.stats_json);
     const std::string json = stats.json();
@@ -187,7 +189,7 @@ int run_render(RenderArgs& a) {
 
 void register_render_command(CommandLine& cli) {
   static RenderArgs a;
-  a.trace.intersector = "";  // "" = the scene's render.intersector, else the default (mt)
+  a.trace.intersector = "";  // "" = the scene's render.intersector, else watertight
   Command& cmd =
       cli.command("render", "Render a JSON scene or a bare OBJ with Whitted ray tracing")
           .positional("SCENE", a.scene, "scene.json, or model.obj (camera frames it, light at eye)")
@@ -213,7 +215,7 @@ void register_render_command(CommandLine& cli) {
           .option("--fov", a.fov, "vertical field of view in degrees (0 = the scene's, else 45)");
   add_trace_options(cmd, a.trace, /*with_accel=*/true);
   cmd.footer(
-         "--intersector defaults to the scene's render.intersector, else mt.\n"
+         "--intersector defaults to the scene's render.intersector, else watertight.\n"
          "A bare OBJ (or a scene without \"camera\") is framed from the iso view so that its\n"
          "bounding box fills the image, lit by a point light at the eye.\n"
          "Examples:\n"

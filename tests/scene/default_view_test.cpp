@@ -139,3 +139,19 @@ TEST(DefaultView, NamedViewsAndAnExplicitCameraWork) {
 
 }  // namespace
 }  // namespace rayvec
+
+namespace rayvec {
+namespace {
+
+TEST(RenderDefaults, IntersectorIsWatertightUnlessChosen) {
+  const std::string dir = test::temp_dir("render_default_intersector");
+  test::write_file(dir + "/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  auto r = test::run_cli("render -q --stats " + dir + "/m.obj --width 8 --height 8 -o " + dir + "/o.png");
+  EXPECT_NE(r.out.find("intersector: watertight"), std::string::npos) << r.out;
+  r = test::run_cli("render -q --stats " + dir + "/m.obj --width 8 --height 8 -o " + dir +
+                    "/o.png --intersector mt");
+  EXPECT_NE(r.out.find("intersector: mt"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace rayvec
