@@ -129,8 +129,8 @@ int run_render(RenderArgs& a) {
   scene.render.aov = aov;
   const RenderSettings& settings = scene.render;
   if (a.trace.intersector.empty())
-    // Watertight by default: mt lets rays slip between the triangles of closed meshes, for a cost
-    // lost in the noise (see benchmarks.md#decision-render-defaults-to-watertight).
+    // Watertight by default: mt lets rays slip between the triangles of closed meshes (see
+    // benchmarks.md#decision-render-watertight for the cost).
     a.trace.intersector = settings.intersector.empty() ? "watertight" : settings.intersector;
   const TraceConfig config = resolve_trace_options(a.trace);
   const AccelKind kind = resolve_accel(a.trace);
