@@ -1,6 +1,6 @@
 // The pinhole camera's geometry, written once for its three users: the renderer's camera rays
 // (render/camera_rays), the ray sets of `bench rays` and `accuracy` (bench/ray_sets), and the camera
-// of a bare OBJ or a scene without one (frame_bounding_box in scene/scene.cpp). One rule places the
+// of a bare OBJ or a scene without one (place_camera in scene/default_view.cpp). One rule places the
 // eye so a box is in view, one look-at frame turns image-plane positions into directions.
 // Templates over the scalar, instantiated for float (render, scene) and double (bench), so that each
 // caller keeps the precision its outputs are defined in; pure math, no GLM (the bench sits below it).

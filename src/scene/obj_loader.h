@@ -15,7 +15,7 @@ struct ObjModel {
   // Triangles in file order after triangulating polygons as tinyobjloader does; triangle id = index.
   TriangleMesh mesh;
   std::vector<int32_t> triangle_material;  // per triangle: index into materials, -1 = none
-  std::vector<Material> materials;         // from the MTL files (mtl_file.h): validated, map_Kd absolute or ""
+  std::vector<Material> materials;  // from the MTL files (mtl_file.h): validated, map_Kd absolute or ""
   // Optional per-corner attributes: -1 where the face gives none.
   std::vector<Vec3f> normals;
   std::vector<std::array<int32_t, 3>> triangle_normals;
