@@ -1,7 +1,9 @@
 # All dependencies are Debian 12 packages (scripts/install-deps.sh installs them).
 find_package(OpenMP REQUIRED)
 find_package(tinyobjloader REQUIRED)
-find_package(OpenImageIO REQUIRED CONFIG)
+find_package(OpenImageIO REQUIRED CONFIG)  # only in the librayvec_oiio.so module (src/CMakeLists.txt)
+find_package(OpenEXR 3 REQUIRED CONFIG)
+find_package(PNG REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(glm REQUIRED)
 find_package(CLI11 REQUIRED)

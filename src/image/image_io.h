@@ -1,6 +1,9 @@
-// Image files through OpenImageIO (image_io.cpp is the only file that includes it).
+// Image files. Written:
 //   .exr — linear float, every channel of the Image (R G B and any AOVs), plus metadata.
 //   .png — the first three channels, sRGB-encoded (IEC 61966-2-1), 8 bits, clamped to [0, 1].
+// Read: PNG and EXR directly (libpng, OpenEXR), told by their first bytes; any other format
+// OpenImageIO knows through a module loaded on first use (oiio_module.h). Every reader checks the
+// declared size before decoding (image_budget.h).
 #pragma once
 #include <string>
 #include <utility>
@@ -23,9 +26,11 @@ bool is_writable_image_path(const std::string& path);
 void write_image(const std::string& path, const Image& image, const ImageMetadata& metadata = {});
 
 // Reads any format OpenImageIO knows, every channel as float as stored (8-bit PNG values become
-// v/255, still sRGB-encoded; EXR values are linear). Throws InputError for a missing or
-// unreadable file.
+// v/255, still sRGB-encoded; EXR values are linear). Throws InputError naming the file for a
+// missing, unreadable or oversized one. `encoded`, when given, is set for integer pixel formats
+// (PNG, 8/16-bit files: sRGB-encoded values) and cleared for float ones (EXR, HDR: linear).
 Image read_image(const std::string& path);
+Image read_image(const std::string& path, bool* encoded);
 
 // Reads a texture as linear RGB: 8- and 16-bit files are taken as sRGB-encoded and decoded, float
 // files (EXR, HDR) as linear; grey images are widened to RGB and alpha is dropped.

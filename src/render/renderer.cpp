@@ -67,7 +67,9 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
   double primary_seconds = 0, shading_seconds = 0;
   const auto t0 = std::chrono::steady_clock::now();
 
-#pragma omp parallel
+  // No more threads than tiles: a one-tile image would otherwise pay for starting and joining
+  // threads that have nothing to do (a 16x16 render: 3.5x the CPU time of the whole process).
+#pragma omp parallel num_threads(std::max(1, std::min(omp_get_max_threads(), tiles)))
   {
     RayCounts rays;
     double primary_s = 0, shading_s = 0;

@@ -1,6 +1,7 @@
 // image_io: round trips through EXR and PNG, atomic writes, bad extensions; `rayvec compare` exits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -60,6 +61,45 @@ TEST(ImageIo, UnknownExtensionIsInputErrorAndWritesNothing) {
 
 TEST(ImageIo, WriteIntoMissingDirectoryIsRuntimeError) {
   EXPECT_THROW(write_image("/nonexistent-dir-rayvec/a.png", gradient(4, 4)), RuntimeError);
+}
+
+TEST(ImageIo, ExrChannelsReadBackInOpenImageIoOrder) {
+  const std::string dir = test::temp_dir("exr_order");
+  Image img(3, 2, {"R", "G", "B", "Z", "N.x", "N.y", "N.z", "id", "object_id"});
+  for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = float(i) * 0.5f;
+  write_image(dir + "/aov.exr", img);
+  const Image back = read_image(dir + "/aov.exr");
+  const std::vector<std::string> order = {"R", "G", "B", "Z", "id", "object_id", "N.x", "N.y", "N.z"};
+  ASSERT_EQ(back.channels, order);
+  for (int c = 0; c < back.nchannels(); ++c) {
+    const int src =
+        int(std::find(img.channels.begin(), img.channels.end(), back.channels[c]) - img.channels.begin());
+    EXPECT_EQ(back.at(2, 1, c), img.at(2, 1, src)) << back.channels[c];
+  }
+}
+
+TEST(ImageIo, PngRoundTripIsBitExactFor8BitValues) {
+  const std::string dir = test::temp_dir("png_exact");
+  Image img(256, 1, {"R", "G", "B"});
+  for (int x = 0; x < 256; ++x)
+    for (int c = 0; c < 3; ++c) img.at(x, 0, c) = srgb_decode(float(x) / 255.0f);
+  write_image(dir + "/ramp.png", img);
+  const Image back = read_image(dir + "/ramp.png");
+  for (int x = 0; x < 256; ++x) EXPECT_EQ(back.at(x, 0, 1), float(x) / 255.0f) << x;
+}
+
+TEST(ImageIo, OtherFormatsAreReadThroughTheOpenImageIoModule) {
+  const std::string dir = test::temp_dir("ppm");
+  // A 2x1 binary PPM: an sRGB-encoded texture in a format only OpenImageIO reads.
+  test::write_file(dir + "/tex.ppm", std::string("P6\n2 1\n255\n\xff\x00\x00\x00\x80\x00", 17));
+  const Image raw = read_image(dir + "/tex.ppm");
+  ASSERT_EQ(raw.width, 2);
+  EXPECT_FLOAT_EQ(raw.at(0, 0, 0), 1.0f);
+  EXPECT_FLOAT_EQ(raw.at(1, 0, 1), 128.0f / 255.0f);
+  const Image tex = read_texture(dir + "/tex.ppm");
+  EXPECT_NEAR(tex.at(1, 0, 1), srgb_decode(128.0f / 255.0f), 1e-6f);
+  test::write_file(dir + "/junk.img", "not an image at all");
+  EXPECT_THROW(read_image(dir + "/junk.img"), InputError);
 }
 
 TEST(Compare, MeasuresRmseMaxAndCount) {

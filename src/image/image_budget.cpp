@@ -1,0 +1,60 @@
+#include "image/image_budget.h"
+
+#include <cstdio>
+
+#include "io/input_error.h"
+#include "io/text_file.h"
+
+namespace rayvec {
+namespace {
+
+// DEFLATE's largest ratio is 1032:1 (a 258-byte match coded in about two bits); a little slack for
+// the zlib and PNG framing a file also holds.
+constexpr double kMaxDeflateRatio = 1100.0;
+
+std::string size_text(std::int64_t width, std::int64_t height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+std::string megabytes(double bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f MB", bytes / 1e6);
+  return buf;
+}
+
+}  // namespace
+
+std::size_t decoded_image_bytes(std::int64_t width, std::int64_t height, int channels) {
+  if (width <= 0 || height <= 0 || channels <= 0) return 0;
+  const double bytes = double(width) * double(height) * double(channels) * sizeof(float);
+  return bytes >= 1.8e19 ? std::size_t(-1) : std::size_t(bytes);
+}
+
+void check_declared_image_size(const std::string& path, std::int64_t width, std::int64_t height,
+                               int channels) {
+  if (width <= 0 || height <= 0 || channels <= 0)
+    throw InputError(path, 0,
+                     "declares a " + size_text(width, height) + " image with " + std::to_string(channels) +
+                         " channels: an image needs at least one pixel and one channel");
+  const std::size_t need = decoded_image_bytes(width, height, channels);
+  const std::size_t limit = max_input_bytes();
+  if (need > limit)
+    throw InputError(path, 0,
+                     "declares a " + size_text(width, height) + " image with " + std::to_string(channels) +
+                         " channels, " + megabytes(double(need)) + " once decoded, more than the " +
+                         std::to_string(limit / 1000000) +
+                         " MB input limit; set RAYVEC_MAX_INPUT_MB to raise it (e.g. RAYVEC_MAX_INPUT_MB=" +
+                         std::to_string(need / 1000000 + 1000) + ") if this really is the image you meant");
+}
+
+void check_deflate_ratio(const std::string& path, std::int64_t width, std::int64_t height,
+                         std::size_t raw_bytes, std::size_t file_bytes) {
+  if (double(raw_bytes) > kMaxDeflateRatio * double(file_bytes))
+    throw InputError(path, 0,
+                     "declares a " + size_text(width, height) + " image (" + megabytes(double(raw_bytes)) +
+                         " of pixel data) but holds only " + std::to_string(file_bytes) +
+                         " bytes, too few for any compressed form of it: the header is corrupt or the "
+                         "file is truncated");
+}
+
+}  // namespace rayvec

@@ -1,0 +1,175 @@
+// The only file that includes libpng. libpng reports errors by longjmp: every function here that
+// calls into it sets the jump point first and holds no object with a destructor across the call,
+// so a jump skips nothing; the C++ side throws once libpng has returned.
+#include "image/png_file.h"
+
+#include <png.h>
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "image/image_budget.h"
+#include "io/input_error.h"
+
+namespace rayvec {
+namespace {
+
+struct PngContext {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  std::FILE* file = nullptr;
+  char error[200] = "";
+  std::vector<std::uint8_t>* out = nullptr;  // encoding target
+};
+
+extern "C" void on_png_error(png_structp png, png_const_charp message) {
+  auto* ctx = static_cast<PngContext*>(png_get_error_ptr(png));
+  std::snprintf(ctx->error, sizeof ctx->error, "%s", message);
+  png_longjmp(png, 1);
+}
+
+extern "C" void on_png_warning(png_structp, png_const_charp) {}
+
+extern "C" void on_png_write(png_structp png, png_bytep data, png_size_t size) {
+  auto* ctx = static_cast<PngContext*>(png_get_io_ptr(png));
+  ctx->out->insert(ctx->out->end(), data, data + size);
+}
+
+extern "C" void on_png_flush(png_structp) {}
+
+struct ReadHeader {
+  png_uint_32 width = 0, height = 0;
+  int channels = 0, bit_depth = 0;
+  std::size_t rowbytes = 0;
+};
+
+// Header and the transformations to 8/16-bit Y, YA, RGB or RGBA; false with ctx.error on failure.
+bool read_header(PngContext& ctx, ReadHeader& h) {
+  if (setjmp(png_jmpbuf(ctx.png))) return false;
+  png_init_io(ctx.png, ctx.file);
+  png_read_info(ctx.png, ctx.info);
+  const int colour = png_get_color_type(ctx.png, ctx.info);
+  if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(ctx.png);
+  if (colour == PNG_COLOR_TYPE_GRAY && png_get_bit_depth(ctx.png, ctx.info) < 8)
+    png_set_expand_gray_1_2_4_to_8(ctx.png);
+  if (png_get_valid(ctx.png, ctx.info, PNG_INFO_tRNS)) png_set_tRNS_to_alpha(ctx.png);
+  if (png_get_bit_depth(ctx.png, ctx.info) == 16) png_set_swap(ctx.png);  // host order (little-endian)
+  png_set_interlace_handling(ctx.png);
+  png_read_update_info(ctx.png, ctx.info);
+  h.width = png_get_image_width(ctx.png, ctx.info);
+  h.height = png_get_image_height(ctx.png, ctx.info);
+  h.channels = png_get_channels(ctx.png, ctx.info);
+  h.bit_depth = png_get_bit_depth(ctx.png, ctx.info);
+  h.rowbytes = png_get_rowbytes(ctx.png, ctx.info);
+  return true;
+}
+
+bool read_rows(PngContext& ctx, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(ctx.png))) return false;
+  png_read_image(ctx.png, rows);
+  png_read_end(ctx.png, nullptr);
+  return true;
+}
+
+bool write_all(PngContext& ctx, int width, int height, png_bytepp rows, png_textp text, int ntext) {
+  if (setjmp(png_jmpbuf(ctx.png))) return false;
+  png_set_write_fn(ctx.png, &ctx, on_png_write, on_png_flush);
+  png_set_IHDR(ctx.png, ctx.info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB_gAMA_and_cHRM(ctx.png, ctx.info, PNG_sRGB_INTENT_PERCEPTUAL);
+  if (ntext > 0) png_set_text(ctx.png, ctx.info, text, ntext);
+  png_write_info(ctx.png, ctx.info);
+  png_write_image(ctx.png, rows);
+  png_write_end(ctx.png, ctx.info);
+  return true;
+}
+
+std::vector<std::string> channel_names(int channels) {
+  switch (channels) {
+    case 1: return {"Y"};
+    case 2: return {"Y", "A"};
+    case 3: return {"R", "G", "B"};
+    default: return {"R", "G", "B", "A"};
+  }
+}
+
+}  // namespace
+
+bool has_png_signature(const unsigned char* bytes, std::size_t size) {
+  return size >= 8 && png_sig_cmp(bytes, 0, 8) == 0;
+}
+
+Image read_png(const std::string& path, bool* sixteen_bit) {
+  PngContext ctx;
+  ctx.file = std::fopen(path.c_str(), "rb");
+  if (!ctx.file) throw InputError(path, 0, std::string("cannot read image: ") + std::strerror(errno));
+  struct Cleanup {
+    PngContext& c;
+    ~Cleanup() {
+      if (c.png) png_destroy_read_struct(&c.png, c.info ? &c.info : nullptr, nullptr);
+      std::fclose(c.file);
+    }
+  } cleanup{ctx};
+  ctx.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &ctx, on_png_error, on_png_warning);
+  if (ctx.png) ctx.info = png_create_info_struct(ctx.png);
+  if (!ctx.png || !ctx.info) throw RuntimeError(path + ": cannot read PNG: out of memory");
+  ReadHeader h;
+  if (!read_header(ctx, h)) throw InputError(path, 0, std::string("cannot read PNG: ") + ctx.error);
+  check_declared_image_size(path, h.width, h.height, h.channels);
+  struct stat st {};
+  if (fstat(fileno(ctx.file), &st) == 0 && S_ISREG(st.st_mode))
+    check_deflate_ratio(path, h.width, h.height, h.rowbytes * h.height, std::size_t(st.st_size));
+
+  std::vector<std::uint8_t> raw(h.rowbytes * h.height);
+  std::vector<png_bytep> rows(h.height);
+  for (png_uint_32 y = 0; y < h.height; ++y) rows[y] = raw.data() + std::size_t(y) * h.rowbytes;
+  if (!read_rows(ctx, rows.data())) throw InputError(path, 0, std::string("cannot read PNG: ") + ctx.error);
+
+  Image image(int(h.width), int(h.height), channel_names(h.channels));
+  const std::size_t n = image.pixels.size();
+  if (h.bit_depth == 16) {
+    for (std::size_t i = 0; i < n; ++i) {
+      std::uint16_t v;
+      std::memcpy(&v, raw.data() + 2 * i, 2);
+      image.pixels[i] = float(v) / 65535.0f;
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) image.pixels[i] = float(raw[i]) / 255.0f;
+  }
+  if (sixteen_bit) *sixteen_bit = h.bit_depth == 16;
+  return image;
+}
+
+std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const std::vector<std::uint8_t>& rgb,
+                                          const ImageMetadata& metadata) {
+  std::vector<std::uint8_t> out;
+  PngContext ctx;
+  ctx.out = &out;
+  struct Cleanup {
+    PngContext& c;
+    ~Cleanup() {
+      if (c.png) png_destroy_write_struct(&c.png, c.info ? &c.info : nullptr);
+    }
+  } cleanup{ctx};
+  ctx.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_png_error, on_png_warning);
+  if (ctx.png) ctx.info = png_create_info_struct(ctx.png);
+  if (!ctx.png || !ctx.info) throw RuntimeError("cannot encode PNG: out of memory");
+  std::vector<png_bytep> rows(static_cast<std::size_t>(height));
+  for (int y = 0; y < height; ++y)
+    rows[std::size_t(y)] = const_cast<png_bytep>(rgb.data()) + std::size_t(y) * std::size_t(width) * 3;
+  std::vector<png_text> text(metadata.size());
+  for (std::size_t i = 0; i < metadata.size(); ++i) {
+    text[i].compression = PNG_TEXT_COMPRESSION_NONE;
+    text[i].key = const_cast<char*>(metadata[i].first.c_str());
+    text[i].text = const_cast<char*>(metadata[i].second.c_str());
+  }
+  if (!write_all(ctx, width, height, rows.data(), text.data(), int(text.size())))
+    throw RuntimeError(std::string("cannot encode PNG: ") + ctx.error);
+  return out;
+}
+
+}  // namespace rayvec

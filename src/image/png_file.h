@@ -1,0 +1,26 @@
+// PNG files through libpng (png_file.cpp is its only includer).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+#include "image/image_io.h"
+
+namespace rayvec {
+
+// True when `bytes` start with the PNG signature.
+bool has_png_signature(const unsigned char* bytes, std::size_t size);
+
+// Reads a PNG as float channels as stored: 8-bit values v/255, 16-bit v/65535 (still sRGB-encoded),
+// palettes expanded to RGB, a tRNS colour key to alpha; channels Y, Y A, R G B or R G B A. The
+// declared size is checked (image_budget.h) before any pixel is decoded. Throws InputError naming
+// the file for anything unreadable.
+Image read_png(const std::string& path, bool* sixteen_bit = nullptr);
+
+// Encodes 8-bit interleaved RGB rows (`rgb` holds width*height*3 bytes, top row first) as a PNG in
+// memory, with the sRGB chunk and `metadata` as tEXt chunks.
+std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const std::vector<std::uint8_t>& rgb,
+                                          const ImageMetadata& metadata);
+
+}  // namespace rayvec

@@ -1,0 +1,102 @@
+// Start-up cost: the rayvec binary needs only light shared libraries at start, and OpenImageIO (with
+// its ~260 dependencies, 0.25 s and 130 MB before main) is loaded only when a file that is neither
+// PNG nor EXR is read (docs/benchmarks.md#decision-image-io-without-openimageio). A structural check
+// rather than a timed one: a new heavy dependency fails it on any machine, however fast.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "image/image.h"
+#include "image/image_io.h"
+#include "test_support.h"
+
+namespace rayvec {
+namespace {
+
+std::string shell_output(const std::string& cmd) {
+  std::string out;
+  if (std::FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    std::size_t got;
+    while ((got = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, got);
+    ::pclose(p);
+  }
+  return out;
+}
+
+// Every library `ldd` lists for the binary must be one of these (the closure of what rayvec links:
+// libc, C++ runtime, OpenMP, GMP, tinyobjloader, OpenEXR with Imath and zlib, libpng, and the
+// optional Embree rival with TBB). A new entry costs every command its loading time: measure it
+// with scripts/startup_cost.sh and load it on demand if it is heavy, before adding it here.
+const std::regex kAllowed(
+    "(linux-vdso|ld-linux-x86-64|libc|libm|libstdc\\+\\+|libgcc_s|libgomp|libgmp|libtinyobjloader|"
+    "libOpenEXR-3_1|libOpenEXRCore-3_1|libIex-3_1|libIlmThread-3_1|libImath-3_1|libz|libpng16|"
+    "libembree3|libtbb)\\.so.*");
+
+TEST(Startup, BinaryNeedsOnlyLightSharedLibraries) {
+  const std::string ldd = shell_output(std::string("ldd '") + RAYVEC_CLI + "'");
+  ASSERT_NE(ldd.find("libc.so"), std::string::npos) << "ldd failed: " << ldd;
+  int libraries = 0;
+  std::size_t start = 0;
+  while (start < ldd.size()) {
+    const std::size_t end = ldd.find('\n', start);
+    std::string line = ldd.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    start = end == std::string::npos ? ldd.size() : end + 1;
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    std::string name = line.substr(first, line.find_first_of(" \t", first) - first);
+    name = std::filesystem::path(name).filename().string();
+    ++libraries;
+    EXPECT_TRUE(std::regex_match(name, kAllowed)) << name << " is loaded by every rayvec command";
+  }
+  EXPECT_LE(libraries, 24) << ldd;
+  EXPECT_EQ(ldd.find("OpenImageIO"), std::string::npos) << ldd;
+}
+
+// True when the dynamic loader opened librayvec_oiio.so while `rayvec ARGS` ran.
+bool module_loaded_by(const std::string& args, int* status) {
+  const std::string dir = test::temp_dir("ld_debug");
+  ::setenv("LD_DEBUG", "files", 1);
+  ::setenv("LD_DEBUG_OUTPUT", (dir + "/ld").c_str(), 1);
+  *status = test::run_cli(args).status;
+  ::unsetenv("LD_DEBUG");
+  ::unsetenv("LD_DEBUG_OUTPUT");
+  bool loaded = false;
+  for (const auto& f : std::filesystem::directory_iterator(dir))
+    loaded = loaded || test::read_file(f.path().string()).find("librayvec_oiio.so") != std::string::npos;
+  std::filesystem::remove_all(dir);
+  return loaded;
+}
+
+TEST(Startup, OpenImageIoModuleLoadsOnlyForOtherFormats) {
+  const std::string dir = test::temp_dir("module_use");
+  write_image(dir + "/a.png", Image(4, 4, {"R", "G", "B"}));
+  write_image(dir + "/a.exr", Image(4, 4, {"R", "G", "B"}));
+  test::write_file(dir + "/a.ppm", std::string("P6\n1 1\n255\n\0\0\0", 14));
+  int status = -1;
+  EXPECT_FALSE(module_loaded_by("compare '" + dir + "/a.png' '" + dir + "/a.exr'", &status));
+  EXPECT_EQ(status, 0);
+  EXPECT_FALSE(module_loaded_by("--help", &status));
+  EXPECT_TRUE(module_loaded_by("compare '" + dir + "/a.ppm' '" + dir + "/a.ppm'", &status));
+  EXPECT_EQ(status, 0);
+}
+
+TEST(Startup, MissingModuleIsARuntimeErrorNamingIt) {
+  const std::string dir = test::temp_dir("module_missing");
+  test::write_file(dir + "/a.ppm", std::string("P6\n1 1\n255\n\0\0\0", 14));
+  ::setenv("RAYVEC_OIIO_MODULE", (dir + "/nowhere/librayvec_oiio.so").c_str(), 1);
+  const auto r = test::run_cli("compare '" + dir + "/a.ppm' '" + dir + "/a.ppm'");
+  ::unsetenv("RAYVEC_OIIO_MODULE");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("a.ppm: reading this format needs OpenImageIO through librayvec_oiio.so"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("RAYVEC_OIIO_MODULE"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace rayvec

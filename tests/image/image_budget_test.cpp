@@ -1,0 +1,103 @@
+// Decompression bombs: image files whose header declares far more pixels than the file holds (or
+// than the input limit allows) are refused before any pixel is decoded, with a message naming the
+// file, the declared size and how to raise the limit; exit 2 from every command that reads images.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "image/crafted_images.h"
+#include "image/image_budget.h"
+#include "image/image_io.h"
+#include "io/input_error.h"
+#include "test_support.h"
+
+namespace rayvec {
+namespace {
+
+std::string message_of(const std::string& path) {
+  try {
+    read_image(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+std::string small_exr(const std::string& dir) {
+  write_image(dir + "/small.exr", Image(4, 4, {"R", "G", "B"}));
+  return test::read_file(dir + "/small.exr");
+}
+
+TEST(ImageBudget, PngDeclaringMoreThanTheInputLimitIsRefusedByName) {
+  const std::string dir = test::temp_dir("bomb_png");
+  const std::string bomb = test::png_claiming(30000, 30000);
+  EXPECT_LT(bomb.size(), 200u);
+  test::write_file(dir + "/bomb.png", bomb);
+  const std::string m = message_of(dir + "/bomb.png");
+  EXPECT_NE(m.find("bomb.png: declares a 30000x30000 image with 3 channels"), std::string::npos) << m;
+  EXPECT_NE(m.find("RAYVEC_MAX_INPUT_MB"), std::string::npos) << m;
+  test::write_file(dir + "/huge.png", test::png_claiming(65535, 65535));
+  EXPECT_NE(message_of(dir + "/huge.png").find("huge.png: declares a 65535x65535"), std::string::npos);
+}
+
+TEST(ImageBudget, PngDeclaringMoreThanItsBytesCanHoldIsRefusedBeforeDecoding) {
+  const std::string dir = test::temp_dir("bomb_png_ratio");
+  test::write_file(dir + "/lie.png", test::png_claiming(12000, 12000));  // 1.7 GB of floats: within the limit
+  const std::string m = message_of(dir + "/lie.png");
+  EXPECT_NE(m.find("lie.png: declares a 12000x12000 image"), std::string::npos) << m;
+  EXPECT_NE(m.find("too few for any compressed form"), std::string::npos) << m;
+}
+
+TEST(ImageBudget, ExrDeclaringMoreThanTheInputLimitIsRefusedByName) {
+  const std::string dir = test::temp_dir("bomb_exr");
+  test::write_file(dir + "/bomb.exr", test::exr_claiming(small_exr(dir), 30000, 30000));
+  const std::string m = message_of(dir + "/bomb.exr");
+  EXPECT_NE(m.find("bomb.exr: declares a 30000x30000 image with 3 channels"), std::string::npos) << m;
+  EXPECT_NE(m.find("RAYVEC_MAX_INPUT_MB"), std::string::npos) << m;
+}
+
+TEST(ImageBudget, ExrHoldingFewerRowsThanDeclaredFailsByName) {
+  const std::string dir = test::temp_dir("bomb_exr_rows");
+  test::write_file(dir + "/lie.exr", test::exr_claiming(small_exr(dir), 12000, 12000));
+  const std::string m = message_of(dir + "/lie.exr");
+  EXPECT_EQ(m.rfind(dir + "/lie.exr: ", 0), 0u) << m;
+}
+
+TEST(ImageBudget, LimitFollowsRayvecMaxInputMb) {
+  const std::string dir = test::temp_dir("budget_env");
+  write_image(dir + "/a.png", Image(600, 600, {"R", "G", "B"}));  // 4.3 MB as floats
+  ::setenv("RAYVEC_MAX_INPUT_MB", "4", 1);
+  const std::string m = message_of(dir + "/a.png");
+  ::unsetenv("RAYVEC_MAX_INPUT_MB");
+  EXPECT_NE(m.find("a.png: declares a 600x600 image with 3 channels, 4 MB once decoded, more than the 4 MB"),
+            std::string::npos)
+      << m;
+  EXPECT_EQ(read_image(dir + "/a.png").width, 600);
+}
+
+TEST(ImageBudget, CommandsThatDecodeImagesExitTwoNamingTheFile) {
+  const std::string dir = test::temp_dir("bomb_cli");
+  test::write_file(dir + "/bomb.png", test::png_claiming(30000, 30000));
+  write_image(dir + "/ok.png", Image(4, 4, {"R", "G", "B"}));
+  const auto cmp = test::run_cli("compare '" + dir + "/bomb.png' '" + dir + "/bomb.png'");
+  EXPECT_EQ(cmp.status, 2) << cmp.err;
+  EXPECT_NE(cmp.err.find("bomb.png: declares a 30000x30000"), std::string::npos) << cmp.err;
+
+  test::write_file(dir + "/quad.mtl", "newmtl t\nKd 1 1 1\nmap_Kd bomb.png\n");
+  test::write_file(
+      dir + "/quad.obj",
+      "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nusemtl t\nf 1/1 2/2 3/3\n");
+  const auto render = test::run_cli("render '" + dir + "/quad.obj' -o '" + dir + "/out.png' --quiet");
+  EXPECT_EQ(render.status, 2) << render.err;
+  EXPECT_NE(render.err.find("bomb.png: declares a 30000x30000"), std::string::npos) << render.err;
+}
+
+TEST(ImageBudget, DecodedBytesAreFloatsPerChannel) {
+  EXPECT_EQ(decoded_image_bytes(10, 20, 3), 10u * 20u * 3u * 4u);
+  EXPECT_EQ(decoded_image_bytes(0, 20, 3), 0u);
+  EXPECT_THROW(check_declared_image_size("x.png", -1, 5, 3), InputError);
+}
+
+}  // namespace
+}  // namespace rayvec
