@@ -4,7 +4,9 @@
 
 #include <OpenEXR/openexr.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <memory>
 
 #include "io/input_error.h"
 
@@ -22,6 +24,64 @@ extern "C" void keep_exr_error(exr_const_context_t ctxt, exr_result_t code, cons
                   msg ? msg : exr_get_default_error_message(code));
 }
 
+// A name from the file as printable ASCII: other bytes as \xNN.
+std::string printable(const std::string& name) {
+  std::string out;
+  for (unsigned char c : name) {
+    if (c >= 0x20 && c < 0x7f) {
+      out.push_back(char(c));
+    } else {
+      char hex[5];
+      std::snprintf(hex, sizeof hex, "\\x%02X", c);
+      out += hex;
+    }
+  }
+  return out;
+}
+
+// Walks the attribute list of every header (name, type, int32 size, value) and throws when a value
+// claims more bytes than the file holds. The C++ library allocates an attribute of unknown type at
+// its declared size before reading it, so one corrupt size field in a small file would cost
+// gigabytes; OpenEXRCore skips such values without reading them and so does not catch it.
+void check_attribute_sizes(const std::string& path) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) return;  // exr_start_read reports it
+  std::fseek(f.get(), 0, SEEK_END);
+  const long file_size = std::ftell(f.get());
+  std::fseek(f.get(), 4, SEEK_SET);
+  unsigned char version[4];
+  if (std::fread(version, 1, 4, f.get()) != 4) return;
+  const bool multipart = version[1] & 0x10;
+  auto read_name = [&](std::string& out) {
+    out.clear();
+    for (int c; (c = std::fgetc(f.get())) != 0;) {
+      if (c == EOF || out.size() > 255) return false;
+      out.push_back(char(c));
+    }
+    return true;
+  };
+  std::string name, type;
+  for (int headers = 0; headers < 1000000; ++headers) {
+    bool empty_header = true;
+    while (read_name(name) && !name.empty()) {
+      empty_header = false;
+      unsigned char size_bytes[4];
+      if (!read_name(type) || std::fread(size_bytes, 1, 4, f.get()) != 4) return;
+      const long size =
+          long(std::int32_t(std::uint32_t(size_bytes[0]) | std::uint32_t(size_bytes[1]) << 8 |
+                            std::uint32_t(size_bytes[2]) << 16 | std::uint32_t(size_bytes[3]) << 24));
+      const long left = file_size - std::ftell(f.get());
+      if (size < 0 || size > left)
+        throw InputError(path, 0,
+                         "cannot read EXR: attribute '" + printable(name) + "' declares " +
+                             std::to_string(size) + " bytes but the file holds only " + std::to_string(left) +
+                             " more");
+      std::fseek(f.get(), size, SEEK_CUR);
+    }
+    if (!multipart || empty_header) return;
+  }
+}
+
 }  // namespace
 
 bool has_exr_magic(const unsigned char* bytes, std::size_t size) {
@@ -29,6 +89,7 @@ bool has_exr_magic(const unsigned char* bytes, std::size_t size) {
 }
 
 ExrHeader read_exr_header(const std::string& path) {
+  check_attribute_sizes(path);
   ErrorText error;
   exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
   init.error_handler_fn = keep_exr_error;

@@ -135,10 +135,10 @@ Image read_png(const std::string& path, bool* sixteen_bit) {
     for (std::size_t i = 0; i < n; ++i) {
       std::uint16_t v;
       std::memcpy(&v, raw.data() + 2 * i, 2);
-      image.pixels[i] = float(v) / 65535.0f;
+      image.pixels[i] = float(v) * (1.0f / 65535.0f);
     }
   } else {
-    for (std::size_t i = 0; i < n; ++i) image.pixels[i] = float(raw[i]) / 255.0f;
+    for (std::size_t i = 0; i < n; ++i) image.pixels[i] = float(raw[i]) * (1.0f / 255.0f);
   }
   if (sixteen_bit) *sixteen_bit = h.bit_depth == 16;
   return image;

@@ -93,6 +93,17 @@ TEST(ImageBudget, CommandsThatDecodeImagesExitTwoNamingTheFile) {
   EXPECT_NE(render.err.find("bomb.png: declares a 30000x30000"), std::string::npos) << render.err;
 }
 
+// Found by fuzz_image: an attribute of unknown type whose size field says 1.7 GB in a 325-byte file;
+// OpenEXR's C++ reader allocated it before reading (libFuzzer: out-of-memory).
+TEST(ImageBudget, ExrAttributeLargerThanTheFileIsRefused) {
+  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_attribute_claims_1.7GB.exr";
+  const std::string m = message_of(path);
+  EXPECT_NE(m.find("exr_attribute_claims_1.7GB.exr: cannot read EXR: attribute 'rayvecv/1\\x01\\x02' "
+                   "declares 1718571776 bytes"),
+            std::string::npos)
+      << m;
+}
+
 TEST(ImageBudget, DecodedBytesAreFloatsPerChannel) {
   EXPECT_EQ(decoded_image_bytes(10, 20, 3), 10u * 20u * 3u * 4u);
   EXPECT_EQ(decoded_image_bytes(0, 20, 3), 0u);

@@ -85,7 +85,7 @@ TEST(ImageIo, PngRoundTripIsBitExactFor8BitValues) {
     for (int c = 0; c < 3; ++c) img.at(x, 0, c) = srgb_decode(float(x) / 255.0f);
   write_image(dir + "/ramp.png", img);
   const Image back = read_image(dir + "/ramp.png");
-  for (int x = 0; x < 256; ++x) EXPECT_EQ(back.at(x, 0, 1), float(x) / 255.0f) << x;
+  for (int x = 0; x < 256; ++x) EXPECT_EQ(back.at(x, 0, 1), float(x) * (1.0f / 255.0f)) << x;
 }
 
 TEST(ImageIo, OtherFormatsAreReadThroughTheOpenImageIoModule) {

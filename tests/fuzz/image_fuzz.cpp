@@ -1,0 +1,35 @@
+// Fuzzes the PNG and EXR readers (read_png through libpng, read_exr_header through OpenEXRCore,
+// read_exr through the OpenEXR C++ library) and the declared-size checks in front of them. Inputs
+// that start with neither the PNG signature nor the EXR magic are skipped: other formats belong to
+// OpenImageIO's module. The input limit is lowered to 4 MB so that a header declaring a large
+// raster must be refused, not decoded. Only InputError may escape; an image that loads must hold
+// width × height × channels pixels within that limit.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+#include "fuzz_support.h"
+#include "image/exr_header.h"
+#include "image/image_budget.h"
+#include "image/image_io.h"
+#include "image/png_file.h"
+#include "io/input_error.h"
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  ::setenv("RAYVEC_MAX_INPUT_MB", "4", 1);
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
+  if (!rayvec::has_png_signature(data, size) && !rayvec::has_exr_magic(data, size)) return 0;
+  const std::string path =
+      rayvec::fuzz::write_scratch("image.bin", std::string_view(reinterpret_cast<const char*>(data), size));
+  try {
+    const rayvec::Image image = rayvec::read_texture(path);
+    if (image.width < 1 || image.height < 1 || image.nchannels() != 3) __builtin_trap();
+    if (image.pixels.size() != std::size_t(image.width) * std::size_t(image.height) * 3) __builtin_trap();
+    if (rayvec::decoded_image_bytes(image.width, image.height, 3) > 4000000) __builtin_trap();
+  } catch (const rayvec::InputError&) {}
+  return 0;
+}
