@@ -52,21 +52,29 @@ void check_attribute_sizes(const std::string& path) {
   unsigned char version[4];
   if (std::fread(version, 1, 4, f.get()) != 4) return;
   const bool multipart = version[1] & 0x10;
-  auto read_name = [&](std::string& out) {
+  const std::size_t max_name = (version[1] & 0x04) ? 255 : 31;  // the long-names flag
+  // Names longer than the limit or cut by the end of the file: the C++ library would read the
+  // first max_name bytes as the name and go on parsing out of step, so they are refused here.
+  auto read_name = [&](std::string& out, const char* what) {
     out.clear();
     for (int c; (c = std::fgetc(f.get())) != 0;) {
-      if (c == EOF || out.size() > 255) return false;
+      if (c == EOF) throw InputError(path, 0, "cannot read EXR: the header ends inside an attribute");
+      if (out.size() == max_name)
+        throw InputError(path, 0,
+                         std::string("cannot read EXR: an attribute ") + what + " longer than " +
+                             std::to_string(max_name) + " bytes: '" + printable(out.substr(0, 40)) + "...'");
       out.push_back(char(c));
     }
-    return true;
   };
   std::string name, type;
   for (int headers = 0; headers < 1000000; ++headers) {
     bool empty_header = true;
-    while (read_name(name) && !name.empty()) {
+    for (read_name(name, "name"); !name.empty(); read_name(name, "name")) {
       empty_header = false;
       unsigned char size_bytes[4];
-      if (!read_name(type) || std::fread(size_bytes, 1, 4, f.get()) != 4) return;
+      read_name(type, "type");
+      if (std::fread(size_bytes, 1, 4, f.get()) != 4)
+        throw InputError(path, 0, "cannot read EXR: the header ends inside an attribute");
       const long size =
           long(std::int32_t(std::uint32_t(size_bytes[0]) | std::uint32_t(size_bytes[1]) << 8 |
                             std::uint32_t(size_bytes[2]) << 16 | std::uint32_t(size_bytes[3]) << 24));

@@ -104,6 +104,18 @@ TEST(ImageBudget, ExrAttributeLargerThanTheFileIsRefused) {
       << m;
 }
 
+// Found by fuzz_image: an 80-byte attribute name in a file without the long-names flag. OpenEXR's
+// C++ reader took the first 31 bytes as the name and parsed the rest out of step, into an
+// attribute of 1.7 GB.
+TEST(ImageBudget, ExrAttributeNameTooLongIsRefused) {
+  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_attribute_name_too_long.exr";
+  const std::string m = message_of(path);
+  EXPECT_NE(
+      m.find("exr_attribute_name_too_long.exr: cannot read EXR: an attribute name longer than 31 bytes"),
+      std::string::npos)
+      << m;
+}
+
 TEST(ImageBudget, DecodedBytesAreFloatsPerChannel) {
   EXPECT_EQ(decoded_image_bytes(10, 20, 3), 10u * 20u * 3u * 4u);
   EXPECT_EQ(decoded_image_bytes(0, 20, 3), 0u);
