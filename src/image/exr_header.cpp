@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <utility>
 
 #include "io/input_error.h"
 
@@ -39,10 +40,25 @@ std::string printable(const std::string& name) {
   return out;
 }
 
+// The value size OpenEXR's C++ reader consumes for a fixed-size attribute type (-1: any size).
+long fixed_size(const std::string& type) {
+  static const std::pair<const char*, long> kSizes[] = {
+      {"box2i", 16},   {"box2f", 16},      {"v2i", 8},       {"v2f", 8},      {"v2d", 16},
+      {"v3i", 12},     {"v3f", 12},        {"v3d", 24},      {"int", 4},      {"float", 4},
+      {"double", 8},   {"compression", 1}, {"lineOrder", 1}, {"envmap", 1},   {"deepImageState", 1},
+      {"tiledesc", 9}, {"rational", 8},    {"timecode", 8},  {"keycode", 28}, {"chromaticities", 32},
+      {"m33f", 36},    {"m33d", 72},       {"m44f", 64},     {"m44d", 128}};
+  for (const auto& [name, size] : kSizes)
+    if (type == name) return size;
+  return -1;
+}
+
 // Walks the attribute list of every header (name, type, int32 size, value) and throws when a value
-// claims more bytes than the file holds. The C++ library allocates an attribute of unknown type at
-// its declared size before reading it, so one corrupt size field in a small file would cost
-// gigabytes; OpenEXRCore skips such values without reading them and so does not catch it.
+// claims more bytes than the file holds or a size the C++ reader would not consume. That reader
+// allocates an attribute of unknown type at its declared size before reading it, reads a typed one
+// by its own layout whatever the size field says (and then parses the rest of the header out of
+// step), and allocates a preview at width x height x 4: one corrupt field in a small file would
+// cost gigabytes. OpenEXRCore skips such values unread and so does not catch it.
 void check_attribute_sizes(const std::string& path) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) return;  // exr_start_read reports it
@@ -84,7 +100,33 @@ void check_attribute_sizes(const std::string& path) {
                          "cannot read EXR: attribute '" + printable(name) + "' declares " +
                              std::to_string(size) + " bytes but the file holds only " + std::to_string(left) +
                              " more");
-      std::fseek(f.get(), size, SEEK_CUR);
+      const long expected = fixed_size(type);
+      const long start = std::ftell(f.get());
+      auto refuse = [&](const std::string& why) {
+        return InputError(
+            path, 0,
+            "cannot read EXR: attribute '" + printable(name) + "' of type " + printable(type) + ": " + why);
+      };
+      if (expected >= 0 && size != expected)
+        throw refuse("size " + std::to_string(size) + ", but this type has " + std::to_string(expected) +
+                     " bytes");
+      if (type == "chlist") {  // channels: name, 16 bytes each, until an empty name; must fill the value
+        std::string channel;
+        for (read_name(channel, "channel name"); !channel.empty(); read_name(channel, "channel name"))
+          std::fseek(f.get(), 16, SEEK_CUR);
+        if (std::ftell(f.get()) != start + size)
+          throw refuse("the channel list does not fill its " + std::to_string(size) + " bytes");
+      } else if (type == "preview") {  // width, height, then width*height RGBA bytes
+        unsigned char wh[8];
+        if (size < 8 || std::fread(wh, 1, 8, f.get()) != 8) throw refuse("too short for a preview");
+        auto u32 = [&](int i) {
+          return std::uint64_t(wh[i]) | std::uint64_t(wh[i + 1]) << 8 | std::uint64_t(wh[i + 2]) << 16 |
+                 std::uint64_t(wh[i + 3]) << 24;
+        };
+        if (8 + 4 * u32(0) * u32(4) != std::uint64_t(size))
+          throw refuse("the preview size does not match its bytes");
+      }
+      std::fseek(f.get(), start + size, SEEK_SET);
     }
     if (!multipart || empty_header) return;
   }

@@ -116,6 +116,17 @@ TEST(ImageBudget, ExrAttributeNameTooLongIsRefused) {
       << m;
 }
 
+// Found by fuzz_image: a channel list that ends before its declared size. OpenEXR's C++ reader
+// reads typed attributes by their own layout, went on out of step and allocated 1.7 GB.
+TEST(ImageBudget, ExrTypedAttributeThatDoesNotFillItsSizeIsRefused) {
+  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_channel_list_short_of_its_size.exr";
+  const std::string m = message_of(path);
+  EXPECT_NE(
+      m.find("cannot read EXR: attribute 'channels' of type chlist: the channel list does not fill its 178"),
+      std::string::npos)
+      << m;
+}
+
 TEST(ImageBudget, DecodedBytesAreFloatsPerChannel) {
   EXPECT_EQ(decoded_image_bytes(10, 20, 3), 10u * 20u * 3u * 4u);
   EXPECT_EQ(decoded_image_bytes(0, 20, 3), 0u);
