@@ -88,6 +88,33 @@ bool write_all(PngContext& ctx, int width, int height, png_bytepp rows, png_text
   return true;
 }
 
+// Walks the chunk list (length, type, data, CRC) and throws when a chunk claims more bytes than the
+// file holds: libpng allocates an ancillary chunk (tEXt, iCCP, ...) at its declared length before
+// reading it, so one corrupt length field in a small file would cost gigabytes.
+void check_chunk_lengths(const std::string& path, std::FILE* file) {
+  std::fseek(file, 0, SEEK_END);
+  const long file_size = std::ftell(file);
+  long at = 8;
+  unsigned char head[8];
+  while (at + 8 <= file_size) {
+    std::fseek(file, at, SEEK_SET);
+    if (std::fread(head, 1, 8, file) != 8) break;
+    const long length = long(std::uint32_t(head[0]) << 24 | std::uint32_t(head[1]) << 16 |
+                             std::uint32_t(head[2]) << 8 | std::uint32_t(head[3]));
+    const long left = file_size - at - 12;
+    if (length > left) {
+      std::string type;
+      for (int i = 4; i < 8; ++i) type += (head[i] >= 0x20 && head[i] < 0x7f) ? char(head[i]) : '?';
+      throw InputError(path, 0,
+                       "cannot read PNG: chunk '" + type + "' declares " + std::to_string(length) +
+                           " bytes but the file holds only " + std::to_string(left < 0 ? 0 : left) + " more");
+    }
+    if (std::memcmp(head + 4, "IEND", 4) == 0) break;
+    at += 12 + length;
+  }
+  std::fseek(file, 0, SEEK_SET);
+}
+
 std::vector<std::string> channel_names(int channels) {
   switch (channels) {
     case 1: return {"Y"};
@@ -114,6 +141,7 @@ Image read_png(const std::string& path, bool* sixteen_bit) {
       std::fclose(c.file);
     }
   } cleanup{ctx};
+  check_chunk_lengths(path, ctx.file);
   ctx.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &ctx, on_png_error, on_png_warning);
   if (ctx.png) ctx.info = png_create_info_struct(ctx.png);
   if (!ctx.png || !ctx.info) throw RuntimeError(path + ": cannot read PNG: out of memory");

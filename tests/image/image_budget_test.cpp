@@ -127,6 +127,17 @@ TEST(ImageBudget, ExrTypedAttributeThatDoesNotFillItsSizeIsRefused) {
       << m;
 }
 
+// Found by fuzz_image: a tEXt chunk whose length says 1.8 GB in a small file; libpng allocated it
+// before reading.
+TEST(ImageBudget, PngChunkLongerThanTheFileIsRefused) {
+  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/png_text_chunk_claims_1.8GB.png";
+  const std::string m = message_of(path);
+  EXPECT_NE(
+      m.find("png_text_chunk_claims_1.8GB.png: cannot read PNG: chunk 'tEXt' declares 1852133234 bytes"),
+      std::string::npos)
+      << m;
+}
+
 TEST(ImageBudget, DecodedBytesAreFloatsPerChannel) {
   EXPECT_EQ(decoded_image_bytes(10, 20, 3), 10u * 20u * 3u * 4u);
   EXPECT_EQ(decoded_image_bytes(0, 20, 3), 0u);
