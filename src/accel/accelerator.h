@@ -1,6 +1,10 @@
 // Accelerator: answers closest-hit and any-hit queries over one triangle mesh. `brute` tests every
 // triangle (the paper's workload); `bvh` joins as a second implementation of the same interface.
 // Every implementation must return the same triangle ids (equal t: lowest id).
+// Many rays go through trace_closest / trace_occluded: one call per batch, OpenMP threads over
+// groups of stream_rays() rays, each group on the accelerator's stream path (brute force shares
+// every triangle load across the group; a BVH traverses packets), never ray by ray
+// (benchmarks.md#decision-batched-tracing).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -37,8 +41,16 @@ class Accelerator {
   // True when any triangle is hit with tmin <= t <= tmax and not ignored by `filter` (may be null).
   // Thread-safe.
   virtual bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const = 0;
-  // n rays at once (e.g. a coherent camera tile); the default loops over closest().
+  // n rays at once on the calling thread (e.g. a coherent camera tile): hits[k] becomes exactly what
+  // closest(rays[k]) returns. The default loops over closest().
   virtual void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const;
+  // n any-hit queries at once on the calling thread: occluded[k] becomes 1 when
+  // occluded(rays[k], filters ? &filters[k] : nullptr) is true, else 0. `filters` is null or holds
+  // one filter per ray. The default loops over occluded().
+  virtual void occluded_stream(const Ray* rays, uint8_t* occluded, std::size_t n,
+                               const HitFilter* filters = nullptr) const;
+  // Rays per stream call that the batch functions hand each thread (a multiple of 16).
+  virtual std::size_t stream_rays() const { return 64; }
 
   virtual std::size_t bytes() const = 0;  // memory held for the triangles and any structure
   virtual const TraceConfig& config() const = 0;
@@ -47,8 +59,13 @@ class Accelerator {
 std::unique_ptr<Accelerator> make_accelerator(AccelKind kind, const TriangleMesh& mesh,
                                               const TraceConfig& config);
 
-// Whole batches, OpenMP-parallel over rays (dynamic schedule, omp_get_max_threads() threads).
+// Whole batches through closest_stream / occluded_stream: groups of consecutive rays (at most
+// stream_rays(), fewer when that leaves a thread idle) spread over omp_get_max_threads() threads
+// (dynamic schedule). Outputs equal the single-ray queries ray by ray. `filters`: null or one per ray.
+void trace_closest(const Accelerator& accel, std::span<const Ray> rays, std::span<Hit> hits);
 void trace_closest(const Accelerator& accel, const RayBatch& rays, std::span<Hit> hits);
+void trace_occluded(const Accelerator& accel, std::span<const Ray> rays, std::span<uint8_t> occluded,
+                    const HitFilter* filters = nullptr);
 void trace_occluded(const Accelerator& accel, const RayBatch& rays, std::span<uint8_t> occluded);
 
 }  // namespace rayvec

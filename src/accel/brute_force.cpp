@@ -18,6 +18,11 @@ void BruteForce::closest_stream(const Ray* rays, Hit* hits, std::size_t n) const
   closest_batch(*kernels_, tris_.arrays(), 0, tris_.size(), rays, hits, n);
 }
 
+void BruteForce::occluded_stream(const Ray* rays, uint8_t* occluded, std::size_t n,
+                                 const HitFilter* filters) const {
+  occluded_batch(*kernels_, tris_.arrays(), 0, tris_.size(), rays, occluded, n, filters);
+}
+
 bool BruteForce::occluded(const Ray& ray, const HitFilter* filter) const {
   return kernels_->occluded(tris_.arrays(), 0, tris_.size(), ray, filter);
 }

@@ -14,6 +14,9 @@ class BruteForce final : public Accelerator {
   bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
   // Cache-blocked over the triangles (closest_batch): every ray of the batch per triangle chunk.
   void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;
+  // The same tiling for any-hit queries (occluded_batch): a ray stops at its first hit.
+  void occluded_stream(const Ray* rays, uint8_t* occluded, std::size_t n,
+                       const HitFilter* filters = nullptr) const override;
   std::size_t bytes() const override { return tris_.bytes(); }
   const TraceConfig& config() const override { return config_; }
 

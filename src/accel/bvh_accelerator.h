@@ -36,6 +36,8 @@ class BvhAccelerator final : public Accelerator {
   // Consecutive groups of packet_width rays (16 on AVX-512, 8 on AVX2) are traversed as packets —
   // best for coherent rays such as a 4×4 camera tile; results equal closest() ray by ray.
   void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;
+  // Any-hit queries keep the inherited occluded_stream (single-ray traversals, each stopping at its
+  // first hit): there is no any-hit packet traversal.
   std::size_t bytes() const override { return tris_.bytes() + tree_.bytes(); }
   const TraceConfig& config() const override { return config_; }
 

@@ -45,20 +45,27 @@ std::vector<Visibility> compute_visibility(const Accelerator& accel, const Trian
   // Open segment: t = 0 (the origin) and t = 1 (the vertex) excluded, everything between included.
   const float t_open_start = std::numeric_limits<float>::denorm_min();
   const float t_open_end = std::nextafter(1.0f, 0.0f);
-  std::vector<Visibility> result(verts.size());
-  const auto n = static_cast<std::int64_t>(verts.size());
-#pragma omp parallel for schedule(dynamic, 64)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const Vec3f p = verts[static_cast<std::size_t>(i)];
-    if (!is_finite(p)) {
-      result[i] = Visibility::undefined;
-      continue;
-    }
-    const OwnVertex own{&mesh, p};
-    const HitFilter filter{&touches_vertex, &own};
-    const Ray ray{origin, p - origin, t_open_start, t_open_end};
-    result[i] = accel.occluded(ray, &filter) ? Visibility::blocked : Visibility::visible;
+  // One segment (ray and filter) per finite vertex, all traced as one batch.
+  std::vector<std::size_t> row;
+  std::vector<OwnVertex> own;
+  std::vector<Ray> rays;
+  row.reserve(verts.size());
+  own.reserve(verts.size());
+  rays.reserve(verts.size());
+  for (std::size_t i = 0; i < verts.size(); ++i) {
+    if (!is_finite(verts[i])) continue;
+    row.push_back(i);
+    own.push_back(OwnVertex{&mesh, verts[i]});
+    rays.push_back(Ray{origin, verts[i] - origin, t_open_start, t_open_end});
   }
+  std::vector<HitFilter> filters(own.size());
+  for (std::size_t k = 0; k < own.size(); ++k) filters[k] = HitFilter{&touches_vertex, &own[k]};
+  std::vector<uint8_t> occluded(rays.size());
+  trace_occluded(accel, rays, occluded, filters.data());
+
+  std::vector<Visibility> result(verts.size(), Visibility::undefined);
+  for (std::size_t k = 0; k < row.size(); ++k)
+    result[row[k]] = occluded[k] ? Visibility::blocked : Visibility::visible;
   return result;
 }
 

@@ -32,7 +32,7 @@ VisibilityMesh build_visibility_mesh(const std::vector<Vec3f>& verts,
 // Per vertex: the answer for the segment origin -> verts[i], traced as the ray
 // origin + t·(verts[i] − origin) with t in [smallest positive float, largest float below 1], and
 // triangles with a corner exactly at verts[i] ignored (this covers duplicated vertex positions).
-// `accel` must have been built on `mesh`. OpenMP-parallel over vertices.
+// `accel` must have been built on `mesh`. One trace_occluded batch (OpenMP-parallel, stream path).
 std::vector<Visibility> compute_visibility(const Accelerator& accel, const TriangleMesh& mesh,
                                            const std::vector<Vec3f>& verts, Vec3f origin);
 

@@ -1,5 +1,7 @@
 #include "kernels/closest_batch.h"
 
+#include <vector>
+
 namespace rayvec {
 
 void closest_batch(const TriangleKernels& kernels, const TriangleArrays& tris, uint32_t begin, uint32_t end,
@@ -10,6 +12,30 @@ void closest_batch(const TriangleKernels& kernels, const TriangleArrays& tris, u
     if (kernels.closest_pair)  // two rays per triangle load where the table has it
       for (; k + 2 <= n; k += 2) kernels.closest_pair(tris, chunk, chunk_end, rays + k, hits + k);
     for (; k < n; ++k) kernels.closest(tris, chunk, chunk_end, rays[k], hits[k]);
+    chunk = chunk_end;
+  }
+}
+
+void occluded_batch(const TriangleKernels& kernels, const TriangleArrays& tris, uint32_t begin, uint32_t end,
+                    const Ray* rays, uint8_t* occluded, std::size_t n, const HitFilter* filters) {
+  thread_local std::vector<uint32_t> open;  // the rays without a hit so far
+  open.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    occluded[k] = 0;
+    open[k] = uint32_t(k);
+  }
+  std::size_t open_count = n;
+  for (uint32_t chunk = begin; chunk < end && open_count > 0;) {
+    const uint32_t chunk_end = end - chunk > kTriangleChunk ? chunk + kTriangleChunk : end;
+    std::size_t still = 0;
+    for (std::size_t j = 0; j < open_count; ++j) {
+      const uint32_t k = open[j];
+      if (kernels.occluded(tris, chunk, chunk_end, rays[k], filters ? &filters[k] : nullptr))
+        occluded[k] = 1;
+      else
+        open[still++] = k;
+    }
+    open_count = still;
     chunk = chunk_end;
   }
 }
