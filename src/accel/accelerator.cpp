@@ -68,7 +68,7 @@ void Accelerator::occluded_stream(const Ray* rays, uint8_t* occluded, std::size_
 
 void trace_closest(const Accelerator& accel, std::span<const Ray> rays, std::span<Hit> hits) {
   for_each_group(accel, rays.size(), [&](std::size_t begin, std::size_t count) {
-    accel.closest_stream(rays.data() + begin, hits.data() + begin, count);
+    accel.closest_group(rays.data() + begin, hits.data() + begin, count);
   });
 }
 
@@ -76,7 +76,7 @@ void trace_closest(const Accelerator& accel, const RayBatch& rays, std::span<Hit
   for_each_group(accel, rays.size(), [&](std::size_t begin, std::size_t count) {
     thread_local std::vector<Ray> group;
     gather(rays, begin, count, group);
-    accel.closest_stream(group.data(), hits.data() + begin, count);
+    accel.closest_group(group.data(), hits.data() + begin, count);
   });
 }
 

@@ -44,6 +44,12 @@ class Accelerator {
   // n rays at once on the calling thread (e.g. a coherent camera tile): hits[k] becomes exactly what
   // closest(rays[k]) returns. The default loops over closest().
   virtual void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const;
+  // n rays of a batch in any order (trace_closest's groups), with closest_stream's result. The
+  // default is closest_stream; an accelerator whose stream only pays off for coherent rays sends
+  // the others ray by ray.
+  virtual void closest_group(const Ray* rays, Hit* hits, std::size_t n) const {
+    closest_stream(rays, hits, n);
+  }
   // n any-hit queries at once on the calling thread: occluded[k] becomes 1 when
   // occluded(rays[k], filters ? &filters[k] : nullptr) is true, else 0. `filters` is null or holds
   // one filter per ray. The default loops over occluded().
@@ -59,7 +65,7 @@ class Accelerator {
 std::unique_ptr<Accelerator> make_accelerator(AccelKind kind, const TriangleMesh& mesh,
                                               const TraceConfig& config);
 
-// Whole batches through closest_stream / occluded_stream: groups of consecutive rays (at most
+// Whole batches through closest_group / occluded_stream: groups of consecutive rays (at most
 // stream_rays(), fewer when that leaves a thread idle) spread over omp_get_max_threads() threads
 // (dynamic schedule). Outputs equal the single-ray queries ray by ray. `filters`: null or one per ray.
 void trace_closest(const Accelerator& accel, std::span<const Ray> rays, std::span<Hit> hits);

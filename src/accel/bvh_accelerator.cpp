@@ -45,6 +45,16 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
   tris_ = TriangleSoA(mesh, binary.order);
 }
 
+bool packet_coherent(const Ray* rays, std::size_t n) {
+  const Vec3f o = rays[0].org, d0 = rays[0].dir;
+  const float len0 = length(d0);
+  for (std::size_t k = 1; k < n; ++k) {
+    const Vec3f d = rays[k].dir;
+    if (!(rays[k].org == o) || !(dot(d, d0) >= kPacketCone * len0 * length(d))) return false;
+  }
+  return true;
+}
+
 Hit BvhAccelerator::closest(const Ray& ray) const {
   Hit hit;
   if (traceable(ray)) traversal_->closest(tree_.arrays(), tris_.arrays(), *kernels_, ray, hit);
@@ -61,6 +71,17 @@ void BvhAccelerator::closest_stream(const Ray* rays, Hit* hits, std::size_t n) c
                                (1u << count) - 1u);
   }
   for (; i < n; ++i) hits[i] = closest(rays[i]);
+}
+
+void BvhAccelerator::closest_group(const Ray* rays, Hit* hits, std::size_t n) const {
+  const std::size_t w = traversal_->closest_packet ? std::size_t(traversal_->packet_width) : 1;
+  for (std::size_t i = 0; i < n; i += w) {
+    const std::size_t count = std::min(n - i, w);
+    if (count > 1 && packet_coherent(rays + i, count))
+      closest_stream(rays + i, hits + i, count);
+    else
+      for (std::size_t k = i; k < i + count; ++k) hits[k] = closest(rays[k]);
+  }
 }
 
 bool BvhAccelerator::occluded(const Ray& ray, const HitFilter* filter) const {

@@ -26,6 +26,13 @@ struct BvhOptions {
   int direct_leaf = -1;
 };
 
+// cos of the widest angle between a packet's first direction and another for closest_group to
+// trace the group as a packet (about 8 degrees).
+inline constexpr float kPacketCone = 0.99f;
+// Whether rays[0, n) (n >= 1) share their origin and point within kPacketCone of rays[0]'s
+// direction; false when a NaN is involved.
+bool packet_coherent(const Ray* rays, std::size_t n);
+
 class BvhAccelerator final : public Accelerator {
  public:
   // Builds with omp_get_max_threads() threads. Throws std::length_error for 2^26 or more triangles.
@@ -36,6 +43,11 @@ class BvhAccelerator final : public Accelerator {
   // Consecutive groups of packet_width rays (16 on AVX-512, 8 on AVX2) are traversed as packets —
   // best for coherent rays such as a 4×4 camera tile; results equal closest() ray by ray.
   void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;
+  // Packets for the groups of packet_width rays that share an origin and whose directions lie within
+  // kPacketCone of the first ray's (a pinhole camera's rays in scan order); single rays for the
+  // other groups, where diverging lanes make a packet slower than its rays one by one
+  // (benchmarks.md#decision-batched-tracing).
+  void closest_group(const Ray* rays, Hit* hits, std::size_t n) const override;
   // Any-hit queries keep the inherited occluded_stream (single-ray traversals, each stopping at its
   // first hit): there is no any-hit packet traversal.
   std::size_t bytes() const override { return tris_.bytes() + tree_.bytes(); }

@@ -127,6 +127,10 @@ TEST_P(BatchedTracingIsa, StreamsEqualSingleRayQueriesBitForBit) {
   std::vector<Ray> rays = test::random_rays(1000 + 7, 1.5f, 12);
   rays[5].org.x = std::numeric_limits<float>::quiet_NaN();  // never hits, on every path
   rays[6].dir = {kInf, 0, 0};
+  // A pinhole camera in scan order: coherent groups, which a BVH traces as packets.
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 40; ++x)
+      rays.push_back(Ray{{0.1f, -0.05f, 2.5f}, {float(x - 20) / 40.0f, float(y - 12) / 40.0f, -1.0f}});
   const auto accel = make_accelerator(c.accel, mesh, TraceConfig{c.isa, c.intersector});
 
   std::vector<Hit> span_hits(rays.size()), batch_hits(rays.size());
@@ -160,6 +164,24 @@ TEST_P(BatchedTracingIsa, StreamsEqualSingleRayQueriesBitForBit) {
     differ += filtered[i] != plain[i];
   }
   EXPECT_GT(differ, 0u);  // the filters matter
+}
+
+TEST(BatchedTracing, PacketsOnlyForRaysFromOneOriginInANarrowCone) {
+  std::vector<Ray> row;
+  for (int x = 0; x < 16; ++x) row.push_back(Ray{{0, 0, 3}, {float(x) / 200.0f, 0.1f, -1.0f}});
+  EXPECT_TRUE(packet_coherent(row.data(), row.size()));
+  EXPECT_TRUE(packet_coherent(row.data(), 1));
+  std::vector<Ray> moved = row;
+  moved[9].org.x = 1e-3f;  // another origin
+  EXPECT_FALSE(packet_coherent(moved.data(), moved.size()));
+  std::vector<Ray> wide = row;
+  wide[15].dir = {1.0f, 0.1f, -1.0f};  // 45 degrees off
+  EXPECT_FALSE(packet_coherent(wide.data(), wide.size()));
+  std::vector<Ray> nan = row;
+  nan[3].dir.y = std::nanf("");
+  EXPECT_FALSE(packet_coherent(nan.data(), nan.size()));
+  const std::vector<Ray> random = test::random_rays(16, 1.5f, 5);
+  EXPECT_FALSE(packet_coherent(random.data(), random.size()));
 }
 
 std::string batch_case_name(const ::testing::TestParamInfo<BatchCase>& info) {
