@@ -1,6 +1,7 @@
 # All dependencies are Debian 12 packages (scripts/install-deps.sh installs them).
 find_package(OpenMP REQUIRED)
 find_package(tinyobjloader REQUIRED)
+find_package(FastFloat REQUIRED)  # libfast-float-dev: header only, obj_chunk.cpp
 find_package(OpenImageIO REQUIRED CONFIG)  # only in the librayvec_oiio.so module (src/CMakeLists.txt)
 find_package(OpenEXR 3 REQUIRED CONFIG)
 find_package(PNG REQUIRED)

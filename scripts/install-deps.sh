@@ -5,7 +5,7 @@
 # (scripts/fuzz.sh, tests/fuzz/); the normal build and test path does not need them.
 set -euo pipefail
 packages=(build-essential cmake pkg-config
-          libtinyobjloader-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
+          libtinyobjloader-dev libfast-float-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
           libglm-dev nlohmann-json3-dev libcli11-dev
           libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev clang-format
           assimp-testmodels)  # real-world OBJ/MTL files for tests/scene and tests/render (skipped without)

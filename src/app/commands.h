@@ -15,5 +15,6 @@ void register_accuracy_command(CommandLine& cli);
 // Subcommands of `rayvec bench`:
 void register_bench_paper_command(Command& bench);
 void register_bench_rays_command(Command& bench);
+void register_bench_obj_command(Command& bench);
 
 }  // namespace rayvec

@@ -34,5 +34,6 @@ int main(int argc, char** argv) {
   // bench subcommands register on it: register_bench_<name>_command(bench)
   rayvec::register_bench_paper_command(bench);
   rayvec::register_bench_rays_command(bench);
+  rayvec::register_bench_obj_command(bench);
   return cli.main(argc, argv);
 }

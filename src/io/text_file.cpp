@@ -52,6 +52,8 @@ std::string read_text_file(const std::string& path) {
       static_cast<unsigned long long>(st.st_size) > limit)
     too_large(path);
   std::string text;
+  // One allocation for a regular file: growing by doubling would copy a big file several times.
+  if (S_ISREG(st.st_mode) && st.st_size > 0) text.reserve(static_cast<std::size_t>(st.st_size));
   char buffer[1 << 16];
   std::size_t got;
   while ((got = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) {

@@ -1,6 +1,8 @@
 // The only file that includes tiny_obj_loader.h (Debian's libtinyobjloader: header + shared
-// library, so no TINYOBJLOADER_IMPLEMENTATION here). tinyobjloader parses and triangulates; rayvec
+// library, so no TINYOBJLOADER_IMPLEMENTATION here). Geometry comes from rayvec's fast reader
+// (obj_fast.h) where the file allows; otherwise tinyobjloader parses and triangulates, and rayvec
 // validates first (obj_scan.cpp) because tinyobjloader turns `nan` into 0 and drops bad faces quietly.
+// Both number `usemtl` names through the same MtlReader.
 #include "scene/obj_loader.h"
 
 #include <tiny_obj_loader.h>
@@ -11,7 +13,9 @@
 
 #include "io/text_file.h"
 #include "io/input_error.h"
+#include "platform/stopwatch.h"
 #include "scene/mtl_file.h"
+#include "scene/obj_fast.h"
 #include "scene/obj_scan.h"
 
 namespace rayvec {
@@ -71,26 +75,9 @@ void split_warnings(const std::string& text, const std::string& path, std::vecto
   }
 }
 
-}  // namespace
-
-ObjModel load_obj(const std::string& path) {
-  const std::string text = read_text_file(path);
-  check_obj_text(text, path);
-
-  tinyobj::attrib_t attrib;
-  std::vector<tinyobj::shape_t> shapes;
-  std::vector<tinyobj::material_t> materials;
-  std::string warn, err;
-  std::istringstream in(text);
-  ObjModel model;
-  MtlReader mtl_reader(fs::path(path).parent_path(), model.warnings);
-  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, true))
-    throw InputError(path, 0, "cannot parse: " + err);
-
-  split_warnings(warn, path, model.warnings);
-  if (!err.empty()) split_warnings(err, path, model.warnings);  // e.g. MTL problems on success
-  model.materials = std::move(mtl_reader.read);
-
+// tinyobjloader's shapes into the triangles, attributes and material ids of `model`.
+void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
+                      std::size_t material_count, const std::string& path, ObjModel& model) {
   const auto nv = static_cast<int>(attrib.vertices.size() / 3);
   const auto nn = static_cast<int>(attrib.normals.size() / 3);
   const auto nt = static_cast<int>(attrib.texcoords.size() / 2);
@@ -125,9 +112,48 @@ ObjModel load_obj(const std::string& path) {
       model.triangle_texcoords.push_back(tri_t);
       const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
       model.triangle_material.push_back(
-          material >= 0 && material < static_cast<int>(materials.size()) ? material : -1);
+          material >= 0 && material < static_cast<int>(material_count) ? material : -1);
     }
   }
+}
+
+}  // namespace
+
+ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoadTimes* times) {
+  ObjLoadTimes clock;
+  auto t0 = std::chrono::steady_clock::now();
+  const std::string text = read_text_file(path);
+  clock.read = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  std::vector<tinyobj::material_t> materials;
+  std::string warn, err;
+  ObjModel model;
+  MtlReader mtl_reader(fs::path(path).parent_path(), model.warnings);
+  const MtlLibraryLoader load_mtl = [&](const std::string& file, std::map<std::string, int>& by_name,
+                                        std::string& mtl_warn, std::string& mtl_err) {
+    return mtl_reader(file, &materials, &by_name, &mtl_warn, &mtl_err);
+  };
+  clock.fast = !options.reference && load_obj_fast(text, options.threads, load_mtl, model, warn, err);
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  if (!clock.fast) {
+    const double before_check = seconds_since(t0);
+    check_obj_text(text, path);
+    clock.check = seconds_since(t0) - before_check;
+    std::istringstream in(text);
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, true))
+      throw InputError(path, 0, "cannot parse: " + err);
+  }
+  clock.parse = seconds_since(t0) - clock.check;
+
+  t0 = std::chrono::steady_clock::now();
+  split_warnings(warn, path, model.warnings);
+  if (!err.empty()) split_warnings(err, path, model.warnings);  // e.g. MTL problems on success
+  model.materials = std::move(mtl_reader.read);
+  if (!clock.fast) convert_geometry(attrib, shapes, materials.size(), path, model);
+  clock.convert = seconds_since(t0);
+  if (times) *times = clock;
   if (model.mesh.triangles.empty())
     throw InputError(path, 0, "no triangles (the file has no `f` face with 3 or more corners)");
   return model;

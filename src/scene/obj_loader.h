@@ -24,10 +24,25 @@ struct ObjModel {
   std::vector<std::string> warnings;  // non-fatal problems (e.g. a missing MTL file), one per line
 };
 
+// How load_obj reads: rayvec's fast reader where the file allows (obj_fast.h), else tinyobjloader.
+struct ObjLoadOptions {
+  int threads = 0;         // the fast reader's threads; 0: 2 for files of 4 MB and more, else 1
+  bool reference = false;  // tinyobjloader only: the reference the fast reader is tested against
+};
+
+// Seconds per phase of one load_obj, for `rayvec bench obj`.
+struct ObjLoadTimes {
+  double read = 0;     // the file into memory
+  double check = 0;    // obj_scan's check (the reference path only)
+  double parse = 0;    // the fast reader, or tinyobjloader
+  double convert = 0;  // tinyobjloader's output into an ObjModel, and the materials
+  bool fast = false;   // whether the fast reader took the file
+};
+
 // Loads and validates `path`. Throws InputError (`file:line: what is wrong`) for a missing or
 // unreadable file, a face index out of range, a vertex coordinate that is not a finite number (the
 // loader reads `nan`/`inf` text itself, because tinyobjloader silently turns them into 0), and
 // files with no triangles.
-ObjModel load_obj(const std::string& path);
+ObjModel load_obj(const std::string& path, const ObjLoadOptions& options = {}, ObjLoadTimes* times = nullptr);
 
 }  // namespace rayvec

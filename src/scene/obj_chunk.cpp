@@ -1,0 +1,240 @@
+// The only file that includes fast_float (Debian's libfast-float-dev, header only): correctly
+// rounded decimal-to-double conversion, the same value std::from_chars gives obj_scan.cpp's check.
+// tinyobjloader's own conversion accumulates digits in double arithmetic, so its floats can differ
+// from these in the last bit (see benchmarks.md#decision-obj-fast-path).
+#include "scene/obj_chunk.h"
+
+#include <fast_float/fast_float.h>
+
+#include <algorithm>
+#include <cmath>
+#include <system_error>
+
+namespace rayvec {
+namespace {
+
+constexpr int kV = 0, kVt = 1, kVn = 2;  // the order of `a/b/c` in a face corner
+
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+bool is_line_end(char c) { return c == '\n' || c == '\r'; }
+bool is_digit(char c) { return static_cast<unsigned>(c - '0') < 10u; }
+
+class Cursor {
+ public:
+  Cursor(const char* p, const char* end) : p_(p), end_(end) {}
+
+  bool done() const { return p_ == end_; }
+  const char* pos() const { return p_; }
+  bool at_line_end() const { return p_ == end_ || is_line_end(*p_); }
+  bool at_token_end() const { return p_ == end_ || is_blank(*p_) || is_line_end(*p_); }
+  char peek() const { return p_ == end_ ? '\0' : *p_; }
+  void skip_blanks() {
+    while (p_ != end_ && is_blank(*p_)) ++p_;
+  }
+  std::string_view token() {
+    const char* start = p_;
+    while (!at_token_end()) ++p_;
+    return {start, static_cast<std::size_t>(p_ - start)};
+  }
+  void jump(const char* p) { p_ = p; }
+
+  // Moves past the line end. False for a lone CR inside the text: tinyobjloader ends a line there
+  // too, but the chunking (split at LF) and this parser do not follow it.
+  bool next_line() {
+    while (p_ != end_ && !is_line_end(*p_)) ++p_;
+    if (p_ == end_) return true;
+    if (*p_ == '\r') {
+      ++p_;
+      if (p_ == end_) return true;
+      if (*p_ != '\n') return false;
+    }
+    ++p_;
+    return true;
+  }
+
+  // A number tinyobjloader reads in full and obj_scan.cpp accepts: optional sign, digits with an
+  // optional point, an optional exponent, finite as a float.
+  bool number(float& out) {
+    const char* start = p_;
+    if (start != end_ && *start == '+') {
+      ++start;
+      if (start == end_ || !(is_digit(*start) || *start == '.')) return false;
+    }
+    double value = 0;
+    const fast_float::from_chars_result r = fast_float::from_chars(start, end_, value);
+    if (r.ec != std::errc()) return false;
+    p_ = r.ptr;
+    out = static_cast<float>(value);
+    return at_token_end() && std::isfinite(value) && std::isfinite(out);
+  }
+
+  // A face index: optional minus, 1 to 9 digits, not 0.
+  bool index(int32_t& out) {
+    const bool negative = p_ != end_ && *p_ == '-';
+    if (negative) ++p_;
+    int32_t value = 0;
+    int digits = 0;
+    for (; p_ != end_ && is_digit(*p_); ++p_, ++digits) {
+      if (digits == 9) return false;  // beyond any file rayvec reads, and int32 overflow
+      value = value * 10 + (*p_ - '0');
+    }
+    if (digits == 0 || value == 0) return false;
+    out = negative ? -value : value;
+    return true;
+  }
+
+ private:
+  const char* p_;
+  const char* end_;
+};
+
+struct Corner {
+  std::array<int32_t, 3> index{0, -1, -1};  // v, vt, vn; 0-based (see ObjChunk), -1 = none
+  std::array<bool, 3> relative{false, false, false};
+};
+
+class ChunkParser {
+ public:
+  explicit ChunkParser(ObjChunk& chunk) : c_(chunk) {}
+
+  bool vertex_line(Cursor& in, int kind) {
+    std::array<float, 3> x{0, 0, 0};
+    const int needed = kind == kVt ? 1 : 3;
+    for (int k = 0; k < needed; ++k) {
+      in.skip_blanks();
+      if (in.at_line_end() || !in.number(x[k])) return false;
+    }
+    if (kind == kVt) {
+      in.skip_blanks();  // tinyobjloader reads a second coordinate, 0 when there is none
+      if (!in.at_line_end() && !in.number(x[1])) return false;
+      c_.texcoords.push_back({x[0], x[1]});
+    } else {
+      (kind == kV ? c_.positions : c_.normals).push_back({x[0], x[1], x[2]});
+    }
+    return in.next_line();
+  }
+
+  bool face_line(Cursor& in) {
+    std::array<Corner, 4> corners;
+    int n = 0;
+    for (;;) {
+      in.skip_blanks();
+      if (in.at_line_end()) break;
+      if (n == 4 || !corner(in, corners[n])) return false;
+      ++n;
+    }
+    if (n < 3) return false;
+    if (n == 4) {
+      c_.quads.push_back(static_cast<uint32_t>(c_.triangles.size()));
+      triangle(corners[0], corners[1], corners[2]);
+      triangle(corners[0], corners[2], corners[3]);
+    } else {
+      triangle(corners[0], corners[1], corners[2]);
+    }
+    return in.next_line();
+  }
+
+ private:
+  int64_t have(int kind) const {
+    return static_cast<int64_t>(kind == kV    ? c_.positions.size()
+                                : kind == kVt ? c_.texcoords.size()
+                                              : c_.normals.size());
+  }
+
+  bool item(Cursor& in, Corner& out, int kind) {
+    int32_t raw = 0;
+    if (!in.index(raw)) return false;
+    const int64_t count = have(kind);
+    if (raw > 0) {
+      c_.highest_ahead[kind] = std::max(c_.highest_ahead[kind], raw - count);
+      out.index[kind] = raw - 1;
+    } else {
+      const int64_t local = count + raw;
+      c_.lowest_relative[kind] = std::min(c_.lowest_relative[kind], local);
+      out.index[kind] = static_cast<int32_t>(local);
+      out.relative[kind] = true;
+    }
+    return true;
+  }
+
+  // v, v/vt, v//vn, v/vt/vn
+  bool corner(Cursor& in, Corner& out) {
+    if (!item(in, out, kV)) return false;
+    if (in.peek() == '/') {
+      in.jump(in.pos() + 1);
+      if (in.peek() == '/') {
+        in.jump(in.pos() + 1);
+        if (!item(in, out, kVn)) return false;
+      } else {
+        if (!item(in, out, kVt)) return false;
+        if (in.peek() == '/') {
+          in.jump(in.pos() + 1);
+          if (!item(in, out, kVn)) return false;
+        }
+      }
+    }
+    return in.at_token_end();
+  }
+
+  void triangle(const Corner& a, const Corner& b, const Corner& c) {
+    const auto t = static_cast<uint32_t>(c_.triangles.size());
+    c_.triangles.push_back({static_cast<uint32_t>(a.index[kV]), static_cast<uint32_t>(b.index[kV]),
+                            static_cast<uint32_t>(c.index[kV])});
+    c_.triangle_texcoords.push_back({a.index[kVt], b.index[kVt], c.index[kVt]});
+    c_.triangle_normals.push_back({a.index[kVn], b.index[kVn], c.index[kVn]});
+    const Corner* corners[3] = {&a, &b, &c};
+    for (uint32_t k = 0; k < 3; ++k)
+      for (int kind = 0; kind < 3; ++kind)
+        if (corners[k]->relative[kind]) c_.relative[kind].push_back(3 * t + k);
+  }
+
+  ObjChunk& c_;
+};
+
+}  // namespace
+
+void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
+  Cursor in(text.data(), text.data() + text.size());
+  ChunkParser parser(chunk);
+  bool ok = true;
+  while (ok && !in.done()) {
+    ++chunk.lines;
+    in.skip_blanks();
+    const char* line = in.pos();
+    const std::string_view key = in.token();
+    // Keywords as tinyobjloader tells them apart; the ones obj_scan.cpp checks (v, vn, vt, f)
+    // with nothing after them are errors, left to the reference path.
+    if (key == "v" || key == "vn" || key == "vt") {
+      const int kind = key == "v" ? kV : key == "vt" ? kVt : kVn;
+      ok = !in.at_line_end() && parser.vertex_line(in, kind);
+    } else if (key == "f") {
+      ok = !in.at_line_end() && parser.face_line(in);
+    } else if (key == "l" || key == "p" || key == "vw") {
+      ok = false;  // lines, points, skin weights: rare, and tinyobjloader may reject them
+    } else if (key.substr(0, 6) == "usemtl") {
+      // tinyobjloader matches the prefix and takes the next word after it, even `usemtlname`
+      in.jump(line + 6);
+      in.skip_blanks();
+      chunk.events.push_back(
+          {ObjEvent::usemtl, chunk.lines, chunk.triangles.size(), std::string(in.token())});
+      ok = in.next_line();
+    } else if (key == "mtllib" && !in.at_line_end()) {
+      in.jump(line + 7);
+      const char* start = in.pos();
+      while (!in.at_line_end()) in.jump(in.pos() + 1);
+      chunk.events.push_back({ObjEvent::mtllib, chunk.lines, chunk.triangles.size(),
+                              std::string(start, static_cast<std::size_t>(in.pos() - start))});
+      ok = in.next_line();
+    } else if (key == "g" && !in.at_line_end()) {
+      in.skip_blanks();
+      if (in.at_line_end())
+        chunk.events.push_back({ObjEvent::empty_group, chunk.lines, chunk.triangles.size(), {}});
+      ok = in.next_line();
+    } else {
+      ok = in.next_line();  // blank lines, comments, o, s, t and what tinyobjloader ignores
+    }
+  }
+  chunk.ok = ok;
+}
+
+}  // namespace rayvec

@@ -1,0 +1,53 @@
+// parse_obj_chunk: rayvec's fast OBJ tokenizer for one piece of a file (a run of whole lines), the
+// first stage of load_obj_fast (obj_fast.h). It accepts only a strict subset of OBJ whose meaning is
+// certain to match tinyobjloader's — v/vn/vt with plain decimal numbers, triangles and quads with
+// `a`, `a/b`, `a//c` or `a/b/c` corners, usemtl/mtllib/g/o/s/t lines, comments — and reports
+// anything else (an error, a polygon of 5 or more corners, `l`/`p`/`vw` lines, lone CR line ends)
+// as "not mine", so that the caller hands the whole file to the reference path instead.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "math/vec3.h"
+
+namespace rayvec {
+
+// A line whose effect depends on what came before it in the file (MTL libraries load in file
+// order, `usemtl` looks its name up in what has loaded so far); replayed in order after parsing.
+struct ObjEvent {
+  enum Kind : uint8_t { usemtl, mtllib, empty_group } kind;
+  std::size_t line;      // 1-based, within the chunk
+  std::size_t triangle;  // triangles of the chunk before this line
+  std::string text;      // usemtl: the name; mtllib: the rest of the line after `mtllib `
+};
+
+// Face corner indices are 0-based. Where the file writes a negative (relative) index, the value
+// stored is relative to the chunk's first element of that kind (it may be negative: an element of
+// an earlier chunk) and its slot is listed in `relative`; the caller adds the chunk's offset.
+struct ObjChunk {
+  std::vector<Vec3f> positions, normals;
+  std::vector<std::array<float, 2>> texcoords;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<std::array<int32_t, 3>> triangle_normals, triangle_texcoords;  // -1: none
+  // Quads are stored as the triangles (0,1,2), (0,2,3); the first one's index is listed here for
+  // the caller to choose the diagonal once every position is known.
+  std::vector<uint32_t> quads;
+  std::array<std::vector<uint32_t>, 3> relative;    // per kind (v, vt, vn): slots 3 * triangle + corner
+  std::array<int64_t, 3> lowest_relative{0, 0, 0};  // per kind: the smallest relative value stored
+  // per kind: the largest (1-based index - elements of that kind in the chunk before the line); a
+  // positive value is an index the chunk does not define itself, valid only if earlier chunks do.
+  std::array<int64_t, 3> highest_ahead{INT64_MIN, INT64_MIN, INT64_MIN};
+  std::vector<ObjEvent> events;
+  std::size_t lines = 0;
+  bool ok = true;  // false: the text needs the reference path
+};
+
+// Parses `text` (whole lines: it starts at a line start and ends after a line end or at the end of
+// the file). On return `chunk.ok` says whether the text lies in the fast subset.
+void parse_obj_chunk(std::string_view text, ObjChunk& chunk);
+
+}  // namespace rayvec

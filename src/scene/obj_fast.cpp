@@ -1,0 +1,218 @@
+// The pieces of load_obj_fast: split at line ends, parse the pieces in parallel (obj_chunk.cpp),
+// check the indices that cross pieces, then replay the order-dependent lines (mtllib, usemtl) and
+// join. OBJ indices are global and may be relative, so a piece is parsed without knowing how many
+// vertices come before it: relative indices are fixed up afterwards (ObjChunk::relative).
+#include "scene/obj_fast.h"
+
+#include <algorithm>
+#include <exception>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include "scene/obj_chunk.h"
+
+namespace rayvec {
+namespace {
+
+std::vector<std::string_view> split_at_lines(std::string_view text, int pieces) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  for (int i = 1; i < pieces && start < text.size(); ++i) {
+    const std::size_t target = std::max(start, text.size() / static_cast<std::size_t>(pieces) * i);
+    const std::size_t lf = text.find('\n', target);
+    const std::size_t cut = lf == std::string_view::npos ? text.size() : lf + 1;
+    out.push_back(text.substr(start, cut - start));
+    start = cut;
+  }
+  if (start < text.size() || out.empty()) out.push_back(text.substr(start));
+  return out;
+}
+
+void parse_in_parallel(const std::vector<std::string_view>& pieces, std::vector<ObjChunk>& chunks) {
+  std::vector<std::exception_ptr> failures(pieces.size());
+  std::vector<std::thread> workers;
+  for (std::size_t i = 1; i < pieces.size(); ++i)
+    workers.emplace_back([&, i] {
+      try {
+        parse_obj_chunk(pieces[i], chunks[i]);
+      } catch (...) {  // std::bad_alloc: rethrown on the caller's thread
+        failures[i] = std::current_exception();
+      }
+    });
+  try {
+    parse_obj_chunk(pieces[0], chunks[0]);
+  } catch (...) {
+    failures[0] = std::current_exception();
+  }
+  for (std::thread& w : workers) w.join();
+  for (const std::exception_ptr& f : failures)
+    if (f) std::rethrow_exception(f);
+}
+
+// tinyobjloader's reading of the text after `mtllib `: names split at spaces, `\` escapes the next
+// character, and the last (possibly empty) name always counts.
+std::vector<std::string> mtllib_names(const std::string& text) {
+  std::vector<std::string> names;
+  std::string name;
+  bool escaped = false;
+  for (const char ch : text) {
+    if (!escaped && ch == '\\') {
+      escaped = true;
+      continue;
+    }
+    if (!escaped && ch == ' ') {
+      if (!name.empty()) names.push_back(name);
+      name.clear();
+      continue;
+    }
+    escaped = false;
+    name += ch;
+  }
+  names.push_back(name);
+  return names;
+}
+
+// Where each piece starts in the joined arrays.
+struct Offsets {
+  std::array<int64_t, 3> items{0, 0, 0};  // v, vt, vn
+  std::size_t triangles = 0, lines = 0;
+};
+
+// Replays mtllib and usemtl in file order as tinyobjloader does; returns the material of every
+// triangle.
+std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const std::vector<Offsets>& at,
+                                      std::size_t triangles, const MtlLibraryLoader& load_mtl,
+                                      std::string& warn, std::string& err) {
+  std::vector<int32_t> material(triangles, -1);
+  std::map<std::string, int> by_name;
+  std::set<std::string> loaded;
+  int current = -1;
+  std::size_t from = 0;  // first triangle not yet given a material
+  for (std::size_t i = 0; i < chunks.size(); ++i) {
+    for (const ObjEvent& e : chunks[i].events) {
+      const std::size_t triangle = at[i].triangles + e.triangle;
+      if (e.kind == ObjEvent::usemtl) {
+        const auto it = by_name.find(e.text);
+        if (it == by_name.end()) warn += "material [ '" + e.text + "' ] not found in .mtl\n";
+        std::fill(material.begin() + static_cast<std::ptrdiff_t>(from),
+                  material.begin() + static_cast<std::ptrdiff_t>(triangle), current);
+        from = triangle;
+        current = it == by_name.end() ? -1 : it->second;
+      } else if (e.kind == ObjEvent::mtllib) {
+        bool found = false;
+        for (const std::string& name : mtllib_names(e.text)) {
+          if (loaded.count(name) > 0) {
+            found = true;
+            continue;
+          }
+          std::string mtl_warn, mtl_err;
+          const bool ok = load_mtl(name, by_name, mtl_warn, mtl_err);
+          warn += mtl_warn;
+          err += mtl_err;
+          if (ok) {
+            found = true;
+            loaded.insert(name);
+            break;
+          }
+        }
+        if (!found) warn += "Failed to load material file(s). Use default material.\n";
+      } else {
+        warn += "Empty group name. line: " + std::to_string(at[i].lines + e.line) + "\n";
+      }
+    }
+  }
+  std::fill(material.begin() + static_cast<std::ptrdiff_t>(from), material.end(), current);
+  return material;
+}
+
+// tinyobjloader's quad split: along the shorter diagonal, (0,2) only when strictly shorter, with
+// its float arithmetic.
+void split_quads(const std::vector<uint32_t>& quads, ObjModel& m) {
+  const auto& p = m.mesh.positions;
+  for (const uint32_t q : quads) {
+    auto& a = m.mesh.triangles[q];
+    auto& b = m.mesh.triangles[q + 1];
+    const Vec3f v0 = p[a[0]], v1 = p[a[1]], v2 = p[a[2]], v3 = p[b[2]];
+    const float e02x = v2.x - v0.x, e02y = v2.y - v0.y, e02z = v2.z - v0.z;
+    const float e13x = v3.x - v1.x, e13y = v3.y - v1.y, e13z = v3.z - v1.z;
+    const float sqr02 = e02x * e02x + e02y * e02y + e02z * e02z;
+    const float sqr13 = e13x * e13x + e13y * e13y + e13z * e13z;
+    if (sqr02 < sqr13) continue;
+    // stored as (0,1,2), (0,2,3); tinyobjloader's other split is (0,1,3), (1,2,3)
+    const auto resplit = [](auto& t0, auto& t1) {
+      const auto c0 = t0[0], c1 = t0[1], c2 = t0[2], c3 = t1[2];
+      t0 = {c0, c1, c3};
+      t1 = {c1, c2, c3};
+    };
+    resplit(a, b);
+    resplit(m.triangle_texcoords[q], m.triangle_texcoords[q + 1]);
+    resplit(m.triangle_normals[q], m.triangle_normals[q + 1]);
+  }
+}
+
+template <typename T>
+void append(std::vector<T>& to, std::vector<T>& from) {
+  if (to.empty())
+    to = std::move(from);
+  else
+    to.insert(to.end(), from.begin(), from.end());
+}
+
+}  // namespace
+
+bool load_obj_fast(std::string_view text, int threads, const MtlLibraryLoader& load_mtl, ObjModel& model,
+                   std::string& warn, std::string& err) {
+  if (threads <= 0)
+    threads =
+        text.size() >= kObjParallelBytes ? std::clamp(int(std::thread::hardware_concurrency()), 1, 2) : 1;
+  const std::vector<std::string_view> pieces = split_at_lines(text, threads);
+  std::vector<ObjChunk> chunks(pieces.size());
+  parse_in_parallel(pieces, chunks);
+
+  // Indices that leave their piece: valid only if the earlier pieces define what they refer to.
+  // Forward references (valid OBJ, but tinyobjloader may drop a quad using one) take the
+  // reference path too.
+  std::vector<Offsets> at(chunks.size() + 1);
+  for (std::size_t i = 0; i < chunks.size(); ++i) {
+    const ObjChunk& c = chunks[i];
+    if (!c.ok) return false;
+    const std::array<std::size_t, 3> counts{c.positions.size(), c.texcoords.size(), c.normals.size()};
+    for (int kind = 0; kind < 3; ++kind) {
+      if (c.highest_ahead[kind] > at[i].items[kind] || at[i].items[kind] + c.lowest_relative[kind] < 0)
+        return false;
+      at[i + 1].items[kind] = at[i].items[kind] + static_cast<int64_t>(counts[kind]);
+    }
+    at[i + 1].triangles = at[i].triangles + c.triangles.size();
+    at[i + 1].lines = at[i].lines + c.lines;
+  }
+  if (at.back().items[0] >= INT32_MAX || at.back().triangles >= UINT32_MAX / 3) return false;
+
+  // From here on the text is ours: no more fallbacks, so the MTL files load exactly once.
+  ObjModel out;
+  out.triangle_material = replay_materials(chunks, at, at.back().triangles, load_mtl, warn, err);
+  std::vector<uint32_t> quads;
+  for (std::size_t i = 0; i < chunks.size(); ++i) {
+    ObjChunk& c = chunks[i];
+    for (uint32_t slot : c.relative[0])
+      c.triangles[slot / 3][slot % 3] += static_cast<uint32_t>(at[i].items[0]);
+    for (uint32_t slot : c.relative[1])
+      c.triangle_texcoords[slot / 3][slot % 3] += static_cast<int32_t>(at[i].items[1]);
+    for (uint32_t slot : c.relative[2])
+      c.triangle_normals[slot / 3][slot % 3] += static_cast<int32_t>(at[i].items[2]);
+    for (uint32_t q : c.quads) quads.push_back(q + static_cast<uint32_t>(at[i].triangles));
+    append(out.mesh.positions, c.positions);
+    append(out.normals, c.normals);
+    append(out.texcoords, c.texcoords);
+    append(out.mesh.triangles, c.triangles);
+    append(out.triangle_normals, c.triangle_normals);
+    append(out.triangle_texcoords, c.triangle_texcoords);
+  }
+  split_quads(quads, out);
+  out.materials = std::move(model.materials);
+  out.warnings = std::move(model.warnings);
+  model = std::move(out);
+  return true;
+}
+
+}  // namespace rayvec

@@ -1,0 +1,36 @@
+// `rayvec bench obj` runs at a tiny size (so the benchmark cannot rot): it prints one row per way
+// with the fast reader taking the file, and bad usage exits 2.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <string>
+
+#include "test_support.h"
+
+namespace rayvec {
+namespace {
+
+TEST(BenchObj, TinyRunPrintsEveryWayAndTheFastReaderTakesTheFile) {
+  const std::string obj = test::temp_dir("bench_obj") + "/tetra.obj";
+  test::write_file(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+  const auto r = test::run_cli("bench obj " + obj + " --repeats 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("4 triangles"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("fast reader: yes"), std::string::npos) << r.out;
+  for (const char* way : {"reference", "fast-1", "fast-2"})
+    EXPECT_TRUE(std::regex_search(r.out, std::regex(std::string("\n") + way + " +[0-9.]+ +[0-9.]+ +[0-9.]+")))
+        << way << " in " << r.out;
+}
+
+TEST(BenchObj, PolygonFileFallsBackAndBadUsageExits2) {
+  const std::string obj = test::temp_dir("bench_obj_polygon") + "/pentagon.obj";
+  test::write_file(obj, "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nf 1 2 3 4 5\n");
+  const auto r = test::run_cli("bench obj " + obj + " --repeats 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("fast reader: no"), std::string::npos) << r.out;
+  EXPECT_EQ(test::run_cli("bench obj " + obj + " --repeats 0").status, 2);
+  EXPECT_EQ(test::run_cli("bench obj " + obj + ".missing").status, 2);
+}
+
+}  // namespace
+}  // namespace rayvec
