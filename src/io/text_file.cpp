@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "io/input_error.h"
+#include "platform/large_buffer.h"
 
 namespace rayvec {
 namespace {
@@ -53,7 +54,10 @@ std::string read_text_file(const std::string& path) {
     too_large(path);
   std::string text;
   // One allocation for a regular file: growing by doubling would copy a big file several times.
-  if (S_ISREG(st.st_mode) && st.st_size > 0) text.reserve(static_cast<std::size_t>(st.st_size));
+  if (S_ISREG(st.st_mode) && st.st_size > 0) {
+    text.reserve(static_cast<std::size_t>(st.st_size));
+    advise_huge_pages(text.data(), text.capacity());
+  }
   char buffer[1 << 16];
   std::size_t got;
   while ((got = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) {

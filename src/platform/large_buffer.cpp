@@ -2,6 +2,7 @@
 
 #include <sys/mman.h>
 
+#include <cstdint>
 #include <new>
 
 namespace rayvec {
@@ -21,6 +22,19 @@ LargeBuffer allocate_large_buffer(std::size_t bytes) {
   if (align == kHugePage) madvise(p, size, MADV_HUGEPAGE);  // advice only: a refusal changes nothing
 #endif
   return LargeBuffer(p);
+}
+
+void advise_huge_pages(const void* data, std::size_t bytes) {
+#ifdef MADV_HUGEPAGE
+  if (bytes < kHugeFrom) return;
+  const auto begin = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage;
+  const std::uintptr_t last = (begin + bytes) / kHugePage * kHugePage;
+  if (first < last) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // advice only
+#else
+  (void)data;
+  (void)bytes;
+#endif
 }
 
 }  // namespace rayvec

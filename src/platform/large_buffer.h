@@ -18,4 +18,9 @@ using LargeBuffer = std::unique_ptr<void, LargeBufferFree>;
 // At least `bytes` bytes (64 bytes for 0); throws std::bad_alloc when out of memory.
 LargeBuffer allocate_large_buffer(std::size_t bytes);
 
+// The same advice for memory allocated elsewhere and not touched yet (a reserved std::vector or
+// std::string of 4 MiB and more): the whole 2 MiB pages inside [data, data + bytes). Loading a
+// 39 MB OBJ spends about a third of its time in page faults without it.
+void advise_huge_pages(const void* data, std::size_t bytes);
+
 }  // namespace rayvec

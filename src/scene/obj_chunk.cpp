@@ -19,6 +19,26 @@ bool is_blank(char c) { return c == ' ' || c == '\t'; }
 bool is_line_end(char c) { return c == '\n' || c == '\r'; }
 bool is_digit(char c) { return static_cast<unsigned>(c - '0') < 10u; }
 
+// Clinger's fast path (Clinger 1990): a decimal of at most 15 digits and no exponent is m / 10^k
+// with m and 10^k exact doubles, so one IEEE division rounds it correctly, the value fast_float
+// gives. Returns the end of the number, or nullptr when the text needs fast_float.
+const char* plain_decimal(const char* p, const char* end, double& value) {
+  static constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                      1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+  const bool negative = p != end && *p == '-';
+  p += negative;
+  uint64_t m = 0;
+  int digits = 0, fraction = 0;
+  for (; p != end && is_digit(*p); ++p, ++digits) m = m * 10 + static_cast<uint64_t>(*p - '0');
+  if (p != end && *p == '.')
+    for (++p; p != end && is_digit(*p); ++p, ++digits, ++fraction)
+      m = m * 10 + static_cast<uint64_t>(*p - '0');
+  if (digits == 0 || digits > 15 || (p != end && (*p == 'e' || *p == 'E'))) return nullptr;
+  value = static_cast<double>(m) / kPow10[fraction];
+  if (negative) value = -value;
+  return p;
+}
+
 class Cursor {
  public:
   Cursor(const char* p, const char* end) : p_(p), end_(end) {}
@@ -27,7 +47,7 @@ class Cursor {
   const char* pos() const { return p_; }
   bool at_line_end() const { return p_ == end_ || is_line_end(*p_); }
   bool at_token_end() const { return p_ == end_ || is_blank(*p_) || is_line_end(*p_); }
-  char peek() const { return p_ == end_ ? '\0' : *p_; }
+  char peek(std::ptrdiff_t ahead = 0) const { return end_ - p_ > ahead ? p_[ahead] : '\0'; }
   void skip_blanks() {
     while (p_ != end_ && is_blank(*p_)) ++p_;
   }
@@ -61,9 +81,13 @@ class Cursor {
       if (start == end_ || !(is_digit(*start) || *start == '.')) return false;
     }
     double value = 0;
-    const fast_float::from_chars_result r = fast_float::from_chars(start, end_, value);
-    if (r.ec != std::errc()) return false;
-    p_ = r.ptr;
+    if (const char* end = plain_decimal(start, end_, value)) {
+      p_ = end;
+    } else {
+      const fast_float::from_chars_result r = fast_float::from_chars(start, end_, value);
+      if (r.ec != std::errc()) return false;
+      p_ = r.ptr;
+    }
     out = static_cast<float>(value);
     return at_token_end() && std::isfinite(value) && std::isfinite(out);
   }
@@ -91,6 +115,7 @@ class Cursor {
 struct Corner {
   std::array<int32_t, 3> index{0, -1, -1};  // v, vt, vn; 0-based (see ObjChunk), -1 = none
   std::array<bool, 3> relative{false, false, false};
+  bool any_relative() const { return relative[0] || relative[1] || relative[2]; }
 };
 
 class ChunkParser {
@@ -182,6 +207,7 @@ class ChunkParser {
                             static_cast<uint32_t>(c.index[kV])});
     c_.triangle_texcoords.push_back({a.index[kVt], b.index[kVt], c.index[kVt]});
     c_.triangle_normals.push_back({a.index[kVn], b.index[kVn], c.index[kVn]});
+    if (!(a.any_relative() || b.any_relative() || c.any_relative())) return;
     const Corner* corners[3] = {&a, &b, &c};
     for (uint32_t k = 0; k < 3; ++k)
       for (int kind = 0; kind < 3; ++kind)
@@ -193,6 +219,40 @@ class ChunkParser {
 
 }  // namespace
 
+ObjCounts estimate_obj_counts(std::string_view text) {
+  constexpr std::size_t kSamples = 16, kWindow = 4096;
+  ObjCounts n;
+  std::size_t covered = 0;  // bytes of the lines counted
+  const bool whole = text.size() <= kSamples * kWindow;
+  const std::size_t step = whole ? text.size() : text.size() / kSamples;
+  for (std::size_t at = 0; at < text.size(); at += step) {
+    std::string_view window = text.substr(at, whole ? text.size() : kWindow);
+    if (at > 0) {  // from the first line start in the window
+      const std::size_t lf = window.find('\n');
+      window.remove_prefix(lf == std::string_view::npos ? window.size() : lf + 1);
+    }
+    for (std::size_t lf; (lf = window.find('\n')) != std::string_view::npos; window.remove_prefix(lf + 1)) {
+      const std::string_view line = window.substr(0, lf);
+      covered += lf + 1;
+      if (line.rfind("vn ", 0) == 0) ++n.normals;
+      if (line.rfind("v ", 0) == 0) ++n.positions;
+      if (line.rfind("vt ", 0) == 0) ++n.texcoords;
+      if (line.rfind("f ", 0) == 0) {
+        std::size_t corners = 0;
+        for (std::size_t i = 1; i < line.size(); ++i) corners += is_blank(line[i - 1]) && !is_blank(line[i]);
+        n.triangles += corners > 2 ? corners - 2 : 1;
+      }
+    }
+  }
+  if (covered == 0) return n;
+  const auto scale = [&](std::size_t count) {
+    return static_cast<std::size_t>(static_cast<double>(count) * 1.2 * static_cast<double>(text.size()) /
+                                    static_cast<double>(covered)) +
+           16;
+  };
+  return {scale(n.positions), scale(n.normals), scale(n.texcoords), scale(n.triangles)};
+}
+
 void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
   Cursor in(text.data(), text.data() + text.size());
   ChunkParser parser(chunk);
@@ -200,6 +260,18 @@ void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
   while (ok && !in.done()) {
     ++chunk.lines;
     in.skip_blanks();
+    // the common lines first, without the keyword comparisons below
+    const char c0 = in.peek(), c1 = in.peek(1);
+    if (c0 == 'v' && is_blank(c1)) {
+      in.jump(in.pos() + 2);
+      ok = parser.vertex_line(in, kV);
+      continue;
+    }
+    if (c0 == 'f' && is_blank(c1)) {
+      in.jump(in.pos() + 2);
+      ok = parser.face_line(in);
+      continue;
+    }
     const char* line = in.pos();
     const std::string_view key = in.token();
     // Keywords as tinyobjloader tells them apart; the ones obj_scan.cpp checks (v, vn, vt, f)

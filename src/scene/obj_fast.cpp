@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "platform/large_buffer.h"
 #include "scene/obj_chunk.h"
 
 namespace rayvec {
@@ -29,7 +30,28 @@ std::vector<std::string_view> split_at_lines(std::string_view text, int pieces) 
   return out;
 }
 
-void parse_in_parallel(const std::vector<std::string_view>& pieces, std::vector<ObjChunk>& chunks) {
+template <typename T>
+void reserve(std::vector<T>& v, std::size_t count) {
+  v.reserve(count);
+  advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+void reserve(ObjChunk& c, const ObjCounts& n, double share) {
+  const auto part = [share](std::size_t count) { return static_cast<std::size_t>(double(count) * share); };
+  reserve(c.positions, part(n.positions));
+  reserve(c.normals, part(n.normals));
+  reserve(c.texcoords, part(n.texcoords));
+  reserve(c.triangles, part(n.triangles));
+  reserve(c.triangle_normals, part(n.triangles));
+  reserve(c.triangle_texcoords, part(n.triangles));
+}
+
+// The first piece's arrays have room for the whole file: the others are appended to them in place.
+void parse_in_parallel(std::string_view text, const std::vector<std::string_view>& pieces,
+                       std::vector<ObjChunk>& chunks) {
+  const ObjCounts counts = estimate_obj_counts(text);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    reserve(chunks[i], counts, i == 0 ? 1.0 : double(pieces[i].size()) / double(text.size()));
   std::vector<std::exception_ptr> failures(pieces.size());
   std::vector<std::thread> workers;
   for (std::size_t i = 1; i < pieces.size(); ++i)
@@ -153,7 +175,7 @@ void split_quads(const std::vector<uint32_t>& quads, ObjModel& m) {
 
 template <typename T>
 void append(std::vector<T>& to, std::vector<T>& from) {
-  if (to.empty())
+  if (to.empty() && to.capacity() < from.capacity())
     to = std::move(from);
   else
     to.insert(to.end(), from.begin(), from.end());
@@ -168,7 +190,7 @@ bool load_obj_fast(std::string_view text, int threads, const MtlLibraryLoader& l
         text.size() >= kObjParallelBytes ? std::clamp(int(std::thread::hardware_concurrency()), 1, 2) : 1;
   const std::vector<std::string_view> pieces = split_at_lines(text, threads);
   std::vector<ObjChunk> chunks(pieces.size());
-  parse_in_parallel(pieces, chunks);
+  parse_in_parallel(text, pieces, chunks);
 
   // Indices that leave their piece: valid only if the earlier pieces define what they refer to.
   // Forward references (valid OBJ, but tinyobjloader may drop a quad using one) take the
