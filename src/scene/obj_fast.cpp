@@ -185,9 +185,7 @@ void append(std::vector<T>& to, std::vector<T>& from) {
 
 bool load_obj_fast(std::string_view text, int threads, const MtlLibraryLoader& load_mtl, ObjModel& model,
                    std::string& warn, std::string& err) {
-  if (threads <= 0)
-    threads =
-        text.size() >= kObjParallelBytes ? std::clamp(int(std::thread::hardware_concurrency()), 1, 2) : 1;
+  threads = std::max(threads, 1);
   const std::vector<std::string_view> pieces = split_at_lines(text, threads);
   std::vector<ObjChunk> chunks(pieces.size());
   parse_in_parallel(text, pieces, chunks);

@@ -26,7 +26,7 @@ struct ObjModel {
 
 // How load_obj reads: rayvec's fast reader where the file allows (obj_fast.h), else tinyobjloader.
 struct ObjLoadOptions {
-  int threads = 0;         // the fast reader's threads; 0: 2 for files of 4 MB and more, else 1
+  int threads = 0;         // the fast reader's threads (pieces of the file); 0: one
   bool reference = false;  // tinyobjloader only: the reference the fast reader is tested against
 };
 

@@ -1,15 +1,70 @@
-// Fuzzes the OBJ/MTL path: check_obj_text + tinyobjloader + load_obj's conversion. The input is an
-// OBJ file, optionally followed by a line `#--mtl--` and the text of m.mtl (which the OBJ can pull
-// in with `mtllib m.mtl`). The only acceptable failure is InputError; any other exception, crash,
-// sanitizer report or hang is a bug.
+// Fuzzes the OBJ/MTL path: rayvec's fast reader (obj_chunk.cpp, obj_fast.cpp, in 2 pieces so that
+// indices cross pieces) and the reference path (check_obj_text + tinyobjloader + load_obj's
+// conversion), and checks that both give the same result: the same InputError message, or the same
+// triangles, attribute indices, materials and warnings with coordinates within one float step. The
+// input is an OBJ file, optionally followed by a line `#--mtl--` and the text of m.mtl (which the
+// OBJ can pull in with `mtllib m.mtl`). The only acceptable failure is InputError; any other
+// exception, crash, sanitizer report, hang or difference between the two paths is a bug.
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <string>
 #include <string_view>
 
 #include "fuzz_support.h"
 #include "io/input_error.h"
 #include "scene/obj_loader.h"
+
+namespace {
+
+struct Outcome {
+  rayvec::ObjModel model;
+  std::string error;  // "" when it loaded
+};
+
+Outcome load(const std::string& path, const rayvec::ObjLoadOptions& options) {
+  Outcome out;
+  try {
+    out.model = rayvec::load_obj(path, options);
+    const rayvec::ObjModel& model = out.model;
+    // What the loader promises: every triangle corner is a valid vertex index.
+    for (const auto& t : model.mesh.triangles)
+      for (uint32_t i : t)
+        if (i >= model.mesh.positions.size()) __builtin_trap();
+    if (model.triangle_material.size() != model.mesh.triangles.size()) __builtin_trap();
+    // ... and every position is finite (obj_scan rejects nan/inf text that tinyobjloader reads).
+    for (const rayvec::Vec3f& p : model.mesh.positions)
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
+  } catch (const rayvec::InputError& e) {
+    out.error = e.what();
+    // load_obj's own guards behind obj_scan: reaching them means the scan missed a bad face and
+    // the user got a message without a line number.
+    if (out.error.find("after triangulation") != std::string::npos ||
+        out.error.find("tinyobjloader returned") != std::string::npos)
+      __builtin_trap();
+  }
+  return out;
+}
+
+// tinyobjloader's decimal conversion is not correctly rounded: one float step apart is the same.
+bool close(float a, float b) {
+  if (a == b) return true;
+  const auto ia = std::bit_cast<int32_t>(a), ib = std::bit_cast<int32_t>(b);
+  return (ia < 0) == (ib < 0) && std::abs(int64_t(ia) - int64_t(ib)) <= 1;
+}
+
+template <typename Points>
+bool close(const Points& a, const Points& b, int dims) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (int k = 0; k < dims; ++k)
+      if (!close(a[i][k], b[i][k])) return false;
+  return true;
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const std::string_view input(reinterpret_cast<const char*>(data), size);
@@ -20,22 +75,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       split == std::string_view::npos ? std::string_view() : input.substr(split + kSplit.size());
   rayvec::fuzz::write_scratch("m.mtl", mtl);
   const std::string path = rayvec::fuzz::write_scratch("m.obj", obj);
-  try {
-    const rayvec::ObjModel model = rayvec::load_obj(path);
-    // What the loader promises: every triangle corner is a valid vertex index.
-    for (const auto& t : model.mesh.triangles)
-      for (uint32_t i : t)
-        if (i >= model.mesh.positions.size()) __builtin_trap();
-    if (model.triangle_material.size() != model.mesh.triangles.size()) __builtin_trap();
-    // ... and every position is finite (obj_scan rejects nan/inf text that tinyobjloader reads).
-    for (const rayvec::Vec3f& p : model.mesh.positions)
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
-  } catch (const rayvec::InputError& e) {
-    // load_obj's own guards behind obj_scan: reaching them means the scan missed a bad face and
-    // the user got a message without a line number.
-    if (std::string_view(e.what()).find("after triangulation") != std::string_view::npos ||
-        std::string_view(e.what()).find("tinyobjloader returned") != std::string_view::npos)
-      __builtin_trap();
-  }
+  const Outcome fast = load(path, {2, false});
+  const Outcome ref = load(path, {0, true});
+  const rayvec::ObjModel &a = fast.model, &b = ref.model;
+  if (fast.error != ref.error || a.mesh.triangles != b.mesh.triangles ||
+      a.triangle_normals != b.triangle_normals || a.triangle_texcoords != b.triangle_texcoords ||
+      a.triangle_material != b.triangle_material || a.warnings != b.warnings ||
+      a.materials.size() != b.materials.size() || !close(a.mesh.positions, b.mesh.positions, 3) ||
+      !close(a.normals, b.normals, 3) || !close(a.texcoords, b.texcoords, 2))
+    __builtin_trap();
   return 0;
 }
