@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "bvh/counting_traversal.h"
 #include "kernels/intersector.h"
 #include "platform/isa.h"
 #include "kernels/triangle_kernels.h"
@@ -57,6 +58,12 @@ class Accelerator {
                                const HitFilter* filters = nullptr) const;
   // Rays per stream call that the batch functions hand each thread (a multiple of 16).
   virtual std::size_t stream_rays() const { return 64; }
+  // closest() and occluded() (no filter) through a path that counts the work into `cost`: the BVH
+  // through the scalar single-ray traversal with counting policies (bvh/counting_traversal.h),
+  // whatever ISA the accelerator uses; brute force as every triangle tested. Slower than the plain
+  // queries; for the cost AOV and `rayvec trace`. Same results.
+  virtual Hit closest_counted(const Ray& ray, TraversalCost& cost) const = 0;
+  virtual bool occluded_counted(const Ray& ray, TraversalCost& cost) const = 0;
 
   virtual std::size_t bytes() const = 0;  // memory held for the triangles and any structure
   virtual const TraceConfig& config() const = 0;

@@ -27,4 +27,14 @@ bool BruteForce::occluded(const Ray& ray, const HitFilter* filter) const {
   return kernels_->occluded(tris_.arrays(), 0, tris_.size(), ray, filter);
 }
 
+Hit BruteForce::closest_counted(const Ray& ray, TraversalCost& cost) const {
+  cost.triangles += tris_.size();
+  return closest(ray);
+}
+
+bool BruteForce::occluded_counted(const Ray& ray, TraversalCost& cost) const {
+  cost.triangles += tris_.size();  // an upper bound: the kernel may stop at the first hit
+  return occluded(ray);
+}
+
 }  // namespace rayvec

@@ -12,6 +12,8 @@ class BruteForce final : public Accelerator {
 
   Hit closest(const Ray& ray) const override;
   bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
+  Hit closest_counted(const Ray& ray, TraversalCost& cost) const override;
+  bool occluded_counted(const Ray& ray, TraversalCost& cost) const override;
   // Cache-blocked over the triangles (closest_batch): every ray of the batch per triangle chunk.
   void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;
   // The same tiling for any-hit queries (occluded_batch): a ray stops at its first hit.

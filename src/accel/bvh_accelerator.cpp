@@ -88,4 +88,15 @@ bool BvhAccelerator::occluded(const Ray& ray, const HitFilter* filter) const {
   return traceable(ray) && traversal_->occluded(tree_.arrays(), tris_.arrays(), *kernels_, ray, filter);
 }
 
+Hit BvhAccelerator::closest_counted(const Ray& ray, TraversalCost& cost) const {
+  Hit hit;
+  if (traceable(ray)) scalar::counted_closest(tree_.arrays(), tris_.arrays(), *kernels_, ray, hit, cost);
+  return hit;
+}
+
+bool BvhAccelerator::occluded_counted(const Ray& ray, TraversalCost& cost) const {
+  return traceable(ray) &&
+         scalar::counted_occluded(tree_.arrays(), tris_.arrays(), *kernels_, ray, nullptr, cost);
+}
+
 }  // namespace rayvec

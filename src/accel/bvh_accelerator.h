@@ -40,6 +40,8 @@ class BvhAccelerator final : public Accelerator {
 
   Hit closest(const Ray& ray) const override;
   bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
+  Hit closest_counted(const Ray& ray, TraversalCost& cost) const override;
+  bool occluded_counted(const Ray& ray, TraversalCost& cost) const override;
   // Consecutive groups of packet_width rays (16 on AVX-512, 8 on AVX2) are traversed as packets —
   // best for coherent rays such as a 4×4 camera tile; results equal closest() ray by ray.
   void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;

@@ -6,6 +6,7 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/scene_overrides.h"
 #include "app/trace_options.h"
 #include "image/image_io.h"
 #include "io/atomic_file.h"
@@ -13,6 +14,7 @@
 #include "io/progress.h"
 #include "platform/stopwatch.h"
 #include "render/effects.h"
+#include "render/heatmap.h"
 #include "render/renderer.h"
 #include "scene/default_view.h"
 #include "scene/scene.h"
@@ -22,9 +24,8 @@ namespace {
 
 struct RenderArgs {
   std::string scene, output, aov, stats_json;
-  int spp = 0, max_depth = -1, width = 0, height = 0;
-  double min_contribution = -1;
-  bool stats = false, quiet = false;
+  SceneOverrides overrides;
+  bool stats = false, quiet = false, heatmap = false;
   TraceOptions trace;
   // Loading and the view of a scene without a camera (grouped: other option groups edit around it).
   bool strict = false;
@@ -43,8 +44,12 @@ RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& outp
       aov.normal = true;
     else if (item == "id")
       aov.id = true;
+    else if (item == "cost")
+      aov.cost = true;
+    else if (item == "bounces")
+      aov.bounces = true;
     else
-      throw InputError("--aov: unknown '" + item + "' (choose from depth, normal, id)");
+      throw InputError("--aov: unknown '" + item + "' (choose from depth, normal, id, cost, bounces)");
   }
   if (output.size() < 4 || output.substr(output.size() - 4) != ".exr")
     throw InputError("--aov: extra channels need an .exr output (got " + output + ")");
@@ -95,20 +100,19 @@ std::size_t non_background_pixels(const Image& image, Vec3f background) {
   return n;
 }
 
-// Command-line values win over the scene's "render" block; 0/-1/"" mean "not given".
-void apply_overrides(const RenderArgs& a, Scene& scene) {
-  RenderSettings& r = scene.render;
-  if (a.spp < 0 || a.spp > 4096) throw InputError("--spp: must be between 1 and 4096");
-  if (a.spp > 0) r.spp = a.spp;
-  if (a.max_depth < -1 || a.max_depth > 64) throw InputError("--max-depth: must be between 0 and 64");
-  if (a.max_depth >= 0) r.max_depth = a.max_depth;
-  if (a.min_contribution != -1 && !(a.min_contribution >= 0 && a.min_contribution <= 1))
-    throw InputError("--min-contribution: must be between 0 and 1");
-  if (a.min_contribution >= 0) r.min_contribution = float(a.min_contribution);
-  if (a.width < 0 || a.width > 16384 || a.height < 0 || a.height > 16384)
-    throw InputError("--width/--height: must be between 1 and 16384");
-  if (a.width > 0) scene.camera.width = a.width;
-  if (a.height > 0) scene.camera.height = a.height;
+// --heatmap: each cost/bounces channel as a false-colour PNG beside the EXR, with a legend.
+void write_heatmaps(const RenderArgs& a, const Image& image, bool quiet) {
+  const std::string stem = a.output.substr(0, a.output.size() - 4);
+  for (int c = 3; c < image.nchannels(); ++c) {
+    const std::string& name = image.channels[c];
+    if (name != "cost.nodes" && name != "cost.triangles" && name != "bounces") continue;
+    const std::string path = stem + "." + name.substr(name.find('.') + 1) + ".png";
+    const Heatmap h = make_heatmap(image, c);
+    write_image(path, h.image, {{"rayvec:scene", a.scene}, {"rayvec:channel", name}});
+    if (!quiet)
+      std::printf("wrote %s (%s from %s to %s)\n", path.c_str(), name.c_str(), legend_number(h.lo).c_str(),
+                  legend_number(h.hi).c_str());
+  }
 }
 
 int run_render(RenderArgs& a) {
@@ -118,11 +122,13 @@ int run_render(RenderArgs& a) {
   // temporary the image will later be written through.
   { AtomicFile probe(a.output); }
   const RenderSettings::Aovs aov = parse_aovs(a.aov, a.output);
+  if (a.heatmap && !aov.cost && !aov.bounces)
+    throw InputError("--heatmap: draws the cost and bounces AOVs; add --aov cost,bounces (or one of them)");
   RenderStats stats;
 
   auto t = std::chrono::steady_clock::now();
   Scene scene = load_scene(a.scene);
-  apply_overrides(a, scene);
+  apply_scene_overrides(a.overrides, scene);
   const CameraOverrides view = camera_overrides(a);
   // Framing depends on the image's aspect, so it is redone after --width/--height.
   if (scene.default_camera || scene.default_light || view.any()) place_camera(scene, view);
@@ -173,9 +179,9 @@ int run_render(RenderArgs& a) {
                {"rayvec:settings", settings_text},
                {"rayvec:render_seconds", std::to_string(stats.render_seconds)}});
   stats.write_seconds = seconds_since(t);
-
   if (!a.quiet) std::printf("wrote %s (%.3f s)\n", a.output.c_str(), stats.render_seconds);
   if (a.stats) std::printf("intersector: %s\n%s", intersector_name(config.intersector), stats.text().c_str());
+  if (a.heatmap) write_heatmaps(a, image, a.quiet);
   if (!a.stats_json.empty()) {
     AtomicFile file(a.stats_json);
     const std::string json = stats.json();
@@ -194,13 +200,12 @@ void register_render_command(CommandLine& cli) {
       cli.command("render", "Render a JSON scene or a bare OBJ with Whitted ray tracing")
           .positional("SCENE", a.scene, "scene.json, or model.obj (camera frames it, light at eye)")
           .required("-o,--output", a.output, "image.png (8-bit sRGB) or image.exr (linear float)")
-          .option("--spp", a.spp, "samples per pixel, stratified (0 = the scene's render.spp)")
-          .option("--max-depth", a.max_depth, "reflection/refraction depth cap (-1 = scene's)")
-          .option("--min-contribution", a.min_contribution,
-                  "skip secondary rays weighing less than this (-1 = scene's)")
-          .option("--width", a.width, "image width in pixels (0 = the scene camera's)")
-          .option("--height", a.height, "image height in pixels (0 = the scene camera's)")
-          .option("--aov", a.aov, "extra EXR channels, comma-separated: depth,normal,id")
+          .option("--aov", a.aov,
+                  "extra EXR channels, comma-separated: depth,normal,id (first sample), cost (BVH nodes "
+                  "visited and triangles tested by all rays of the pixel), bounces (deepest ray)")
+          .flag("--heatmap", a.heatmap,
+                "with --aov cost/bounces: also OUTPUT.nodes.png, .triangles.png, .bounces.png, false "
+                "colour with a legend")
           .flag("--stats", a.stats, "print ray counts per kind, rays/s and time per stage")
           .option("--stats-json", a.stats_json, "write the statistics as JSON to this file")
           .flag("-q,--quiet", a.quiet, "print nothing but errors (and --stats)")
@@ -213,6 +218,7 @@ void register_render_command(CommandLine& cli) {
           .option("--look-at", a.look_at, "point looked at X,Y,Z (default: the model's centre)")
           .option("--up", a.up, "camera up vector X,Y,Z (default 0,1,0; top/bottom views use -z/+z)")
           .option("--fov", a.fov, "vertical field of view in degrees (0 = the scene's, else 45)");
+  add_scene_overrides(cmd, a.overrides);
   add_trace_options(cmd, a.trace, /*with_accel=*/true);
   cmd.footer(
          "--intersector defaults to the scene's render.intersector, else watertight.\n"
@@ -222,7 +228,11 @@ void register_render_command(CommandLine& cli) {
          "  rayvec render scenes/whitted.json -o whitted.png\n"
          "  rayvec render model.obj -o top.png --view top\n"
          "  rayvec render model.obj -o close.png --eye 0,2,5 --look-at 0,1,0 --fov 30\n"
-         "  rayvec render model.obj -o model.exr --aov depth,normal,id --spp 4 --stats")
+         "  rayvec render model.obj -o model.exr --aov depth,normal,id --spp 4 --stats\n"
+         "  rayvec render scenes/whitted.json -o w.exr --aov cost,bounces --heatmap   # where the BVH works\n"
+         "  rayvec render scenes/whitted.json -o w.png --max-depth 1 --effects shadows,reflection\n"
+         "The cost AOV counts the work of the scalar single-ray traversal (the same tree), tracing every\n"
+         "ray once more to count it; follow one pixel's rays with `rayvec trace`.")
       .run([] { return run_render(a); });
 }
 

@@ -11,6 +11,7 @@ void register_hits_command(CommandLine& cli);
 void register_visibility_command(CommandLine& cli);
 void register_compare_command(CommandLine& cli);
 void register_render_command(CommandLine& cli);
+void register_trace_command(CommandLine& cli);
 void register_accuracy_command(CommandLine& cli);
 // Subcommands of `rayvec bench`:
 void register_bench_paper_command(Command& bench);

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   rayvec::register_visibility_command(cli);
   rayvec::register_compare_command(cli);
   rayvec::register_render_command(cli);
+  rayvec::register_trace_command(cli);
   rayvec::register_accuracy_command(cli);
   rayvec::Command& bench =
       cli.command("bench", "Benchmarks: print rays/s or tests/s with CPU, ISA and threads");

@@ -9,6 +9,7 @@
 
 #include "platform/stopwatch.h"
 #include "render/camera_rays.h"
+#include "render/pixel_cost.h"
 #include "render/render_budget.h"
 
 namespace rayvec {
@@ -34,6 +35,8 @@ std::vector<std::string> channel_names(const RenderSettings::Aovs& aov) {
   if (aov.depth) names.push_back("Z");
   if (aov.normal) names.insert(names.end(), {"N.x", "N.y", "N.z"});
   if (aov.id) names.insert(names.end(), {"id", "object_id"});
+  if (aov.cost) names.insert(names.end(), {"cost.nodes", "cost.triangles"});
+  if (aov.bounces) names.push_back("bounces");
   return names;
 }
 
@@ -57,7 +60,7 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
   // Before any allocation: an absurd size or a framebuffer beyond free memory fails now, exit 2.
   check_render_budget(scene, static_cast<int>(channel_names(settings.aov).size()), available_memory_bytes());
   const CameraRays camera(cam);
-  const Whitted whitted(scene, accel, settings);
+  const bool counting = settings.aov.cost || settings.aov.bounces;
   Image image(cam.width, cam.height, channel_names(settings.aov));
   const int nc = image.nchannels();
   const int tiles_x = (cam.width + kTile - 1) / kTile, tiles_y = (cam.height + kTile - 1) / kTile;
@@ -76,12 +79,20 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
     std::vector<Ray> batch;
     std::vector<Hit> hits;
     std::vector<Vec3f> sum;
+    std::vector<TraversalCost> costs;
+    std::vector<int> bounces;
+    PixelCost pixel_cost(accel);
+    const Whitted whitted(scene, accel, settings, counting ? &pixel_cost : nullptr);
 #pragma omp for schedule(dynamic, 1)
     for (int tile = 0; tile < tiles; ++tile) {
       const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
       const int x1 = std::min(x0 + kTile, cam.width), y1 = std::min(y0 + kTile, cam.height);
       const int w = x1 - x0, n = w * (y1 - y0);
       sum.assign(n, Vec3f{});
+      if (counting) {
+        costs.assign(n, TraversalCost{});
+        bounces.assign(n, 0);
+      }
       for (int s = 0; s < spp; ++s) {
         const auto ta = std::chrono::steady_clock::now();
         batch.resize(n);
@@ -96,7 +107,12 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
         const auto tb = std::chrono::steady_clock::now();
         primary_s += std::chrono::duration<double>(tb - ta).count();
         for (int i = 0; i < n; ++i) {
+          if (counting) pixel_cost.reset();
           sum[i] += whitted.shade(batch[i], hits[i], 0, 1.0f, rays);
+          if (counting) {
+            costs[i] += pixel_cost.cost;
+            bounces[i] = std::max(bounces[i], pixel_cost.bounces);
+          }
           if (s != 0 || nc == 3) continue;
           // AOVs from the first sample.
           float* px = &image.at(x0 + i % w, y0 + i / w, 3);
@@ -123,6 +139,13 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
         px[0] = c.x;
         px[1] = c.y;
         px[2] = c.z;
+        if (!counting) continue;
+        px += image.nchannels() - (settings.aov.cost ? 2 : 0) - (settings.aov.bounces ? 1 : 0);
+        if (settings.aov.cost) {
+          *px++ = float(costs[i].nodes);
+          *px++ = float(costs[i].triangles);
+        }
+        if (settings.aov.bounces) *px = float(bounces[i]);
       }
       const int finished = ++done;
       if (progress && omp_get_thread_num() == 0) progress(double(finished) / tiles);

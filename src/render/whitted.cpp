@@ -22,8 +22,31 @@ bool Whitted::child_worthwhile(int depth, float weight) const {
   return depth + 1 <= settings_.max_depth && weight >= settings_.min_contribution && weight > 0;
 }
 
-Vec3f Whitted::trace(const Ray& ray, int depth, float weight, RayCounts& rays) const {
-  return shade(ray, accel_.closest(ray), depth, weight, rays);
+Vec3f Whitted::trace(RayKind kind, Vec3f factor, const Ray& ray, int depth, float weight,
+                     RayCounts& rays) const {
+  const Hit hit = accel_.closest(ray);
+  if (observer_) return shade_observed(kind, factor, ray, hit, depth, weight, rays);
+  return shade_hit(ray, hit, depth, weight, rays);
+}
+
+void Whitted::skip(RayKind kind, int depth, float weight) const {
+  if (!observer_) return;
+  observer_->skipped(
+      kind, depth + 1 > settings_.max_depth ? SkipReason::max_depth : SkipReason::contribution_cutoff,
+      weight);
+}
+
+Vec3f Whitted::shade(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const {
+  if (observer_) return shade_observed(RayKind::camera, Vec3f{1, 1, 1}, ray, hit, depth, weight, rays);
+  return shade_hit(ray, hit, depth, weight, rays);
+}
+
+Vec3f Whitted::shade_observed(RayKind kind, Vec3f factor, const Ray& ray, const Hit& hit, int depth,
+                              float weight, RayCounts& rays) const {
+  observer_->enter(kind, ray, hit, depth, weight, factor);
+  const Vec3f radiance = shade_hit(ray, hit, depth, weight, rays);
+  observer_->leave(radiance);
+  return radiance;
 }
 
 Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye,
@@ -31,7 +54,8 @@ Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, 
   Vec3f sum{};
   const bool highlight = shaders::has_highlight(shaders::shading_model(m));
   const Vec3f origin = offset_ray_origin(s.p, s.ng);
-  for (const Light& light : scene_.lights) {
+  for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+    const Light& light = scene_.lights[li];
     if (max_component(light.power) <= 0) continue;
     Vec3f to_light, irradiance;
     Ray shadow{origin, {}, 0.0f, kInf};
@@ -51,27 +75,40 @@ Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, 
     // Only lights on the lit side of both normals can contribute: no shadow ray otherwise.
     const float cos_s = dot(s.ns, to_light);
     if (!(dot(s.ng, to_light) > 0) || !(cos_s > 0)) continue;
-    ++rays.shadow;
-    if (accel_.occluded(shadow)) continue;
+    if (settings_.effects.shadows) {
+      ++rays.shadow;
+      const bool blocked = accel_.occluded(shadow);
+      if (observer_ && blocked) observer_->shadow(shadow, int(li), true, Vec3f{});
+      if (blocked) continue;
+    }
     const Vec3f e = irradiance * cos_s;
-    sum += shaders::lambert(kd, e);
-    if (highlight) sum += shaders::blinn_phong(m.Ks, m.Ns, s.ns, to_light, to_eye, e);
+    Vec3f lit = shaders::lambert(kd, e);
+    if (highlight) lit += shaders::blinn_phong(m.Ks, m.Ns, s.ns, to_light, to_eye, e);
+    sum += lit;
+    if (observer_ && settings_.effects.shadows) observer_->shadow(shadow, int(li), false, lit);
   }
   return sum;
 }
 
-Vec3f Whitted::shade(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const {
-  if (!hit.hit()) return scene_.background;
+Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const {
+  if (!hit.hit()) {
+    if (observer_) observer_->local(scene_.background);
+    return scene_.background;
+  }
   const SurfacePoint s = surface_point(scene_, ray, hit);
   const Material& m = scene_.materials[s.material];
   const shaders::ShadingModel model = shaders::shading_model(m);
   const Vec3f kd = diffuse_albedo(scene_, s);
-  if (!shaders::is_lit(model)) return m.Ke + kd;  // constant colour, no lighting
+  if (!shaders::is_lit(model)) {  // constant colour, no lighting
+    if (observer_) observer_->local(m.Ke + kd);
+    return m.Ke + kd;
+  }
 
   const Vec3f dir = normalize(ray.dir);
   Vec3f radiance = m.Ka * scene_.ambient + direct_light(s, m, kd, -dir, rays);
   if (shaders::refracts(m)) radiance *= m.d;  // dissolve: the local term's opacity over the refraction
   radiance += m.Ke;
+  if (observer_) observer_->local(radiance);
 
   // Fresnel reflectance for the Fresnel models: n1 on the incoming side, n2 beyond.
   const float n1 = s.entering ? 1.0f : m.Ni, n2 = s.entering ? m.Ni : 1.0f;
@@ -81,23 +118,35 @@ Vec3f Whitted::shade(const Ray& ray, const Hit& hit, int depth, float weight, Ra
   if (shaders::reflects(m)) {
     const Vec3f kr = shaders::reflection_weight(m, fresnel);
     const float w = weight * max_component(kr);
-    if (child_worthwhile(depth, w)) {
+    if (!settings_.effects.reflection) {
+      if (observer_) observer_->skipped(RayKind::reflection, SkipReason::effect_off, w);
+    } else if (child_worthwhile(depth, w)) {
       Vec3f r = shaders::mirror_direction(dir, s.ns);
       if (!(dot(r, s.ng) > 0)) r = shaders::mirror_direction(dir, s.ng);  // shading normal too bent
       ++rays.reflection;
-      radiance += kr * trace(Ray{offset_ray_origin(s.p, s.ng), r, 0.0f, kInf}, depth + 1, w, rays);
+      radiance += kr * trace(RayKind::reflection, kr, Ray{offset_ray_origin(s.p, s.ng), r, 0.0f, kInf},
+                             depth + 1, w, rays);
+    } else {
+      skip(RayKind::reflection, depth, w);
     }
   }
   if (shaders::refracts(m)) {
     const Vec3f kt = shaders::transmission_weight(m, fresnel);
     const float w = weight * max_component(kt);
-    if (child_worthwhile(depth, w)) {
+    if (!settings_.effects.refraction) {
+      if (observer_) observer_->skipped(RayKind::refraction, SkipReason::effect_off, w);
+    } else if (child_worthwhile(depth, w)) {
       std::optional<Vec3f> t = shaders::refract_direction(dir, s.ns, n1 / n2);
       if (t && !(dot(*t, s.ng) < 0)) t = shaders::refract_direction(dir, s.ng, n1 / n2);
       if (t) {  // none under total internal reflection: the Fresnel reflection carries it all
         ++rays.refraction;
-        radiance += kt * trace(Ray{offset_ray_origin(s.p, -s.ng), *t, 0.0f, kInf}, depth + 1, w, rays);
+        radiance += kt * trace(RayKind::refraction, kt, Ray{offset_ray_origin(s.p, -s.ng), *t, 0.0f, kInf},
+                               depth + 1, w, rays);
+      } else if (observer_) {
+        observer_->skipped(RayKind::refraction, SkipReason::total_internal_reflection, w);
       }
+    } else {
+      skip(RayKind::refraction, depth, w);
     }
   }
   return radiance;

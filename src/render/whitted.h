@@ -7,28 +7,37 @@
 #include "accel/accelerator.h"
 #include "render/render_stats.h"
 #include "render/surface_point.h"
+#include "render/whitted_observer.h"
 #include "scene/scene.h"
 
 namespace rayvec {
 
 class Whitted {
  public:
-  // Reads max_depth and min_contribution of `settings`.
-  Whitted(const Scene& scene, const Accelerator& accel, const RenderSettings& settings)
-      : scene_(scene), accel_(accel), settings_(settings) {}
+  // Reads max_depth, min_contribution and effects of `settings`. `observer`, if not null, is told
+  // about every ray (render/whitted_observer.h); it does not change the arithmetic, so the radiance
+  // is the same with or without one.
+  Whitted(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+          WhittedObserver* observer = nullptr)
+      : scene_(scene), accel_(accel), settings_(settings), observer_(observer) {}
 
   // Radiance arriving along `ray` whose nearest hit is `hit` (already traced). `weight` is the
   // ray's contribution to its pixel (1 for primary rays). Counts the rays it spawns in `rays`.
   Vec3f shade(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const;
 
  private:
-  Vec3f trace(const Ray& ray, int depth, float weight, RayCounts& rays) const;
+  Vec3f shade_observed(RayKind kind, Vec3f factor, const Ray& ray, const Hit& hit, int depth, float weight,
+                       RayCounts& rays) const;
+  Vec3f shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const;
+  Vec3f trace(RayKind kind, Vec3f factor, const Ray& ray, int depth, float weight, RayCounts& rays) const;
+  void skip(RayKind kind, int depth, float weight) const;
   Vec3f direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye, RayCounts& rays) const;
   bool child_worthwhile(int depth, float weight) const;
 
   const Scene& scene_;
   const Accelerator& accel_;
   RenderSettings settings_;
+  WhittedObserver* observer_;
 };
 
 }  // namespace rayvec
