@@ -145,8 +145,14 @@ Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight
       } else if (observer_) {
         observer_->skipped(RayKind::refraction, SkipReason::total_internal_reflection, w);
       }
-    } else {
-      skip(RayKind::refraction, depth, w);
+    } else if (observer_) {
+      // Beyond the critical angle the Fresnel reflectance is 1, so the refraction weighs 0: name
+      // the cause, not the cutoff.
+      const bool tir = !shaders::refract_direction(dir, s.ns, n1 / n2);
+      if (tir && depth + 1 <= settings_.max_depth)
+        observer_->skipped(RayKind::refraction, SkipReason::total_internal_reflection, w);
+      else
+        skip(RayKind::refraction, depth, w);
     }
   }
   return radiance;
