@@ -107,7 +107,7 @@ void write_heatmaps(const RenderArgs& a, const Image& image, bool quiet) {
     const std::string& name = image.channels[c];
     if (name != "cost.nodes" && name != "cost.triangles" && name != "bounces") continue;
     const std::string path = stem + "." + name.substr(name.find('.') + 1) + ".png";
-    const Heatmap h = make_heatmap(image, c);
+    const Heatmap h = make_heatmap(image, c, /*log_scale=*/name != "bounces");
     write_image(path, h.image, {{"rayvec:scene", a.scene}, {"rayvec:channel", name}});
     if (!quiet)
       std::printf("wrote %s (%s from %s to %s)\n", path.c_str(), name.c_str(), legend_number(h.lo).c_str(),

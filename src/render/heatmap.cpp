@@ -21,7 +21,8 @@ constexpr Glyph kGlyphs[] = {
     {'0', {7, 5, 5, 5, 7}}, {'1', {2, 6, 2, 2, 7}}, {'2', {7, 1, 7, 4, 7}}, {'3', {7, 1, 7, 1, 7}},
     {'4', {5, 5, 7, 1, 1}}, {'5', {7, 4, 7, 1, 7}}, {'6', {7, 4, 7, 5, 7}}, {'7', {7, 1, 1, 1, 1}},
     {'8', {7, 5, 7, 5, 7}}, {'9', {7, 5, 7, 1, 7}}, {'.', {0, 0, 0, 0, 2}}, {'-', {0, 0, 7, 0, 0}},
-    {'+', {0, 2, 7, 2, 0}}, {'e', {0, 7, 7, 4, 7}},
+    {'+', {0, 2, 7, 2, 0}}, {'e', {0, 7, 7, 4, 7}}, {'l', {6, 2, 2, 2, 7}}, {'o', {0, 7, 5, 5, 7}},
+    {'g', {7, 5, 7, 1, 7}},
 };
 constexpr int kScale = 2;                   // font pixels per glyph pixel
 constexpr int kAdvance = 4 * kScale;        // glyph width plus a column of space
@@ -78,7 +79,7 @@ std::string legend_number(float v) {
   return b;
 }
 
-Heatmap make_heatmap(const Image& source, int channel) {
+Heatmap make_heatmap(const Image& source, int channel, bool log_scale) {
   Heatmap h;
   bool any = false;
   for (int y = 0; y < source.height; ++y)
@@ -89,12 +90,15 @@ Heatmap make_heatmap(const Image& source, int channel) {
       h.hi = any ? std::max(h.hi, v) : v;
       any = true;
     }
-  const float range = h.hi > h.lo ? h.hi - h.lo : 1.0f;
+  // position along the bar: linear in v, or in log(1 + v − lo) so that a few costly pixels do not
+  // flatten the rest
+  auto scale = [&](float v) { return log_scale ? std::log1p(std::max(0.0f, v - h.lo)) : v - h.lo; };
+  const float range = h.hi > h.lo ? scale(h.hi) : 1.0f;
   h.image = Image(source.width, source.height + Heatmap::kLegendHeight, {"R", "G", "B"});
   for (int y = 0; y < source.height; ++y)
     for (int x = 0; x < source.width; ++x) {
       const float v = source.at(x, y, channel);
-      put(h.image, x, y, std::isfinite(v) ? linear_colour((v - h.lo) / range) : Vec3f{});
+      put(h.image, x, y, std::isfinite(v) ? linear_colour(scale(v) / range) : Vec3f{});
     }
   // legend: a dark strip, the bar from lo (left) to hi (right), the two numbers under its ends
   const int y0 = source.height;
@@ -108,6 +112,7 @@ Heatmap make_heatmap(const Image& source, int channel) {
   const std::string lo = legend_number(h.lo), hi = legend_number(h.hi);
   draw_text(h.image, kMargin, text_y, lo);
   draw_text(h.image, source.width - kMargin - int(hi.size()) * kAdvance + kScale, text_y, hi);
+  if (log_scale) draw_text(h.image, source.width / 2 - 3 * kAdvance / 2, text_y, "log");
   return h;
 }
 

@@ -22,8 +22,10 @@ struct Heatmap {
 };
 
 // `channel` of `source` (an index into source.channels) mapped from [lo, hi] onto cubehelix, the
-// legend strip appended below; the picture keeps source's size and orientation.
-Heatmap make_heatmap(const Image& source, int channel);
+// legend strip appended below; the picture keeps source's size and orientation. With `log_scale`
+// the colour follows log(1 + v − lo) (the legend then reads "log" between its ends): costs span
+// orders of magnitude, and a linear map would show only the most costly pixels.
+Heatmap make_heatmap(const Image& source, int channel, bool log_scale = false);
 
 // The legend's numbers: integers as integers, others with 4 significant digits.
 std::string legend_number(float v);
