@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 
 #include "app/command_line.h"
@@ -157,6 +158,14 @@ int run_render(RenderArgs& a) {
                 scene.camera.width, scene.camera.height, settings.spp, settings.max_depth,
                 double(settings.min_contribution), accel_name(kind), isa_name(config.isa),
                 intersector_name(config.intersector));
+  const RenderSettings::Effects& fx = settings.effects;
+  if (!fx.shadows || !fx.reflection || !fx.refraction) {
+    std::string on = std::string(fx.shadows ? ",shadows" : "") + (fx.reflection ? ",reflection" : "") +
+                     (fx.refraction ? ",refraction" : "");
+    on = on.empty() ? "none" : on.substr(1);
+    std::strncat(settings_text, (" effects=" + on).c_str(),
+                 sizeof settings_text - std::strlen(settings_text) - 1);
+  }
   if (!a.quiet) {
     std::printf("%s\n", plan_effects(scene).describe().c_str());
     std::printf("scene: %s, %zu triangles, %zu lights; %s\n", a.scene.c_str(), scene.mesh.size(),

@@ -13,6 +13,7 @@ std::string count(int n, const char* what) { return std::to_string(n) + " " + wh
 
 EffectsPlan plan_effects(const Scene& scene) {
   EffectsPlan plan;
+  plan.enabled = scene.render.effects;
   for (const Light& l : scene.lights)
     if (max_component(l.power) > 0) ++plan.shadow_lights;
   std::vector<char> used(scene.materials.size(), 0);
@@ -26,13 +27,12 @@ EffectsPlan plan_effects(const Scene& scene) {
 }
 
 std::string EffectsPlan::describe() const {
-  std::string s = "effects: shadows";
-  s += shadow_lights ? " (" + count(shadow_lights, "light") + ")" : ": none";
-  s += ", reflection";
-  s += reflective_materials ? " (" + count(reflective_materials, "material") + ")" : ": none";
-  s += ", refraction";
-  s += refractive_materials ? " (" + count(refractive_materials, "material") + ")" : ": none";
-  return s;
+  auto item = [](bool on, int n, const char* what) {
+    return !on ? std::string(": off") : n ? " (" + count(n, what) + ")" : std::string(": none");
+  };
+  return "effects: shadows" + item(enabled.shadows, shadow_lights, "light") + ", reflection" +
+         item(enabled.reflection, reflective_materials, "material") + ", refraction" +
+         item(enabled.refraction, refractive_materials, "material");
 }
 
 }  // namespace rayvec

@@ -10,10 +10,12 @@
 namespace rayvec {
 
 struct EffectsPlan {
-  int shadow_lights = 0;         // lights with non-zero power (each may cast shadow rays)
-  int reflective_materials = 0;  // materials in use that reflect
-  int refractive_materials = 0;  // materials in use that refract
-  // "effects: shadows (2 lights), reflection (2 materials), refraction: none"
+  int shadow_lights = 0;            // lights with non-zero power (each may cast shadow rays)
+  int reflective_materials = 0;     // materials in use that reflect
+  int refractive_materials = 0;     // materials in use that refract
+  RenderSettings::Effects enabled;  // scene.render.effects: a kind switched off is described as off
+  // "effects: shadows (2 lights), reflection (2 materials), refraction: none" ("…: off" for a kind
+  // switched off by --effects)
   std::string describe() const;
 };
 
