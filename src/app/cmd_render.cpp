@@ -17,7 +17,6 @@
 #include "render/effects.h"
 #include "render/heatmap.h"
 #include "render/renderer.h"
-#include "scene/default_view.h"
 #include "scene/scene.h"
 
 namespace rayvec {
@@ -28,10 +27,7 @@ struct RenderArgs {
   SceneOverrides overrides;
   bool stats = false, quiet = false, heatmap = false;
   TraceOptions trace;
-  // Loading and the view of a scene without a camera (grouped: other option groups edit around it).
-  bool strict = false;
-  std::string view, eye, look_at, up;
-  double fov = 0;
+  bool strict = false;  // loading warnings are errors
 };
 
 RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& output) {
@@ -55,40 +51,6 @@ RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& outp
   if (output.size() < 4 || output.substr(output.size() - 4) != ".exr")
     throw InputError("--aov: extra channels need an .exr output (got " + output + ")");
   return aov;
-}
-
-// "X,Y,Z" of --eye, --look-at, --up.
-Vec3f parse_point(const std::string& text, const char* option) {
-  Vec3f p;
-  std::stringstream ss(text);
-  std::string item;
-  for (int k = 0; k < 3; ++k) {
-    std::size_t used = 0;
-    double v = 0;
-    bool ok = static_cast<bool>(std::getline(ss, item, ','));
-    try {
-      v = ok ? std::stod(item, &used) : 0;
-    } catch (const std::exception&) {
-      ok = false;
-    }
-    if (!ok || used != item.size() || !std::isfinite(v) || std::fabs(v) > 1e30)
-      throw InputError(std::string(option) + ": expected three numbers X,Y,Z (e.g. 0,1.5,4), got '" + text +
-                       "'");
-    p[k] = static_cast<float>(v);
-  }
-  if (std::getline(ss, item))
-    throw InputError(std::string(option) + ": expected three numbers X,Y,Z, got '" + text + "'");
-  return p;
-}
-
-CameraOverrides camera_overrides(const RenderArgs& a) {
-  CameraOverrides o;
-  if (!a.view.empty()) o.view = parse_view(a.view);
-  if (!a.eye.empty()) o.eye = parse_point(a.eye, "--eye");
-  if (!a.look_at.empty()) o.look_at = parse_point(a.look_at, "--look-at");
-  if (!a.up.empty()) o.up = parse_point(a.up, "--up");
-  if (a.fov != 0) o.fov_y = static_cast<float>(a.fov);
-  return o;
 }
 
 // Pixels whose colour differs from the background: none means the camera saw no geometry.
@@ -130,15 +92,9 @@ int run_render(RenderArgs& a) {
   auto t = std::chrono::steady_clock::now();
   Scene scene = load_scene(a.scene);
   apply_scene_overrides(a.overrides, scene);
-  const CameraOverrides view = camera_overrides(a);
-  // Framing depends on the image's aspect, so it is redone after --width/--height.
-  if (scene.default_camera || scene.default_light || view.any()) place_camera(scene, view);
   scene.render.aov = aov;
   const RenderSettings& settings = scene.render;
-  if (a.trace.intersector.empty())
-    // Watertight by default: mt lets rays slip between the triangles of closed meshes (see
-    // benchmarks.md#decision-render-watertight for the cost).
-    a.trace.intersector = settings.intersector.empty() ? "watertight" : settings.intersector;
+  if (a.trace.intersector.empty()) a.trace.intersector = render_intersector(scene);
   const TraceConfig config = resolve_trace_options(a.trace);
   const AccelKind kind = resolve_accel(a.trace);
   stats.load_seconds = seconds_since(t);
@@ -219,14 +175,7 @@ void register_render_command(CommandLine& cli) {
           .option("--stats-json", a.stats_json, "write the statistics as JSON to this file")
           .flag("-q,--quiet", a.quiet, "print nothing but errors (and --stats)")
           .flag("--strict", a.strict,
-                "treat every loading warning (missing texture, MTL value clamped, ...) as an error")
-          .option("--view", a.view,
-                  "frame the model from iso (front-right-above, the default without a scene camera), "
-                  "front, back, left, right, top or bottom")
-          .option("--eye", a.eye, "camera position X,Y,Z (replaces the scene's or the view's)")
-          .option("--look-at", a.look_at, "point looked at X,Y,Z (default: the model's centre)")
-          .option("--up", a.up, "camera up vector X,Y,Z (default 0,1,0; top/bottom views use -z/+z)")
-          .option("--fov", a.fov, "vertical field of view in degrees (0 = the scene's, else 45)");
+                "treat every loading warning (missing texture, MTL value clamped, ...) as an error");
   add_scene_overrides(cmd, a.overrides);
   add_trace_options(cmd, a.trace, /*with_accel=*/true);
   cmd.footer(

@@ -50,9 +50,7 @@ int run_trace(TraceArgs& a) {
   if (a.sample < 0 || a.sample >= spp)
     throw InputError("--sample: " + std::to_string(a.sample) + " is not a sample of this pixel (0 to " +
                      std::to_string(spp - 1) + " with spp " + std::to_string(spp) + ")");
-  if (a.trace.intersector.empty())
-    a.trace.intersector =
-        scene.render.intersector.empty() ? TraceOptions{}.intersector : scene.render.intersector;
+  if (a.trace.intersector.empty()) a.trace.intersector = render_intersector(scene);
   const TraceConfig config = resolve_trace_options(a.trace);
   for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   const auto accel = make_accelerator(resolve_accel(a.trace), scene.mesh, config);
