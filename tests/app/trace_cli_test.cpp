@@ -67,6 +67,20 @@ TEST(TraceCli, JsonPixelValueEqualsTheRenderedPixel) {
     EXPECT_NE(glass.out.find(s), std::string::npos) << s;
 }
 
+// A bare OBJ is framed and lit by the same defaults (and --view) in trace as in render.
+TEST(TraceCli, BareObjWithAViewMatchesTheRender) {
+  const std::string dir = test::temp_dir("trace_obj");
+  const std::string obj =
+      "'" + std::string(RAYVEC_SOURCE_DIR) + "/scenes/models/sphere.obj' --width 40 --height 30";
+  ASSERT_EQ(test::run_cli("render " + obj + " --view top -q -o " + dir + "/s.exr").status, 0);
+  const Image img = read_image(dir + "/s.exr");
+  const auto r = test::run_cli("trace " + obj + " --view top --pixel 20,15 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Vec3f v = json_pixel_value(r.out);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(v[c], img.at(20, 15, c)) << c;
+  EXPECT_NE(r.out.find("\"kind\": \"shadow\""), std::string::npos) << r.out;  // the light at the eye
+}
+
 TEST(TraceCli, CostAndBouncesAovsArePlausibleAndHeatmapsHaveALegend) {
   const std::string dir = test::temp_dir("trace_aov");
   const auto r =
