@@ -96,4 +96,8 @@ void trace_occluded(const Accelerator& accel, const RayBatch& rays, std::span<ui
   });
 }
 
+Hit Accelerator::closest_counted(const Ray& ray, TraversalCost&) const { return closest(ray); }
+
+bool Accelerator::occluded_counted(const Ray& ray, TraversalCost&) const { return occluded(ray); }
+
 }  // namespace rayvec

@@ -61,9 +61,10 @@ class Accelerator {
   // closest() and occluded() (no filter) through a path that counts the work into `cost`: the BVH
   // through the scalar single-ray traversal with counting policies (bvh/counting_traversal.h),
   // whatever ISA the accelerator uses; brute force as every triangle tested. Slower than the plain
-  // queries; for the cost AOV and `rayvec trace`. Same results.
-  virtual Hit closest_counted(const Ray& ray, TraversalCost& cost) const = 0;
-  virtual bool occluded_counted(const Ray& ray, TraversalCost& cost) const = 0;
+  // queries; for the cost AOV and `rayvec trace`. Same results. The defaults (for accelerators
+  // without a counting path) answer through closest()/occluded() and count nothing.
+  virtual Hit closest_counted(const Ray& ray, TraversalCost& cost) const;
+  virtual bool occluded_counted(const Ray& ray, TraversalCost& cost) const;
 
   virtual std::size_t bytes() const = 0;  // memory held for the triangles and any structure
   virtual const TraceConfig& config() const = 0;
