@@ -5,10 +5,10 @@
 //
 // Follows Sena, Sampaio, Nascimento & Nery (2018): one ray broadcast to all lanes, W triangles of the
 // SoA arrays per step, masks with early-outs, blend of the nearest t and triangle index per lane,
-// a final lane reduction. Departures: precomputed edges (v0, e1, e2), FMA, a division-free
-// barycentric test (the sign of det folded into u and v) with one correctly rounded division for t
-// only when a lane survives, u and v tracked per lane, ordered comparisons so NaN never hits, and
-// ties resolved towards the lower triangle id. The float `mt` path (closest_mt_float, below) goes
+// a final lane reduction. Departures: blocked rows of v0, v1, v2 (edges formed per step), FMA, a
+// division-free barycentric test (the sign of det folded into u and v) with one correctly rounded
+// division for t only when a lane survives, u and v tracked per lane, ordered comparisons so NaN never hits,
+// and ties resolved towards the lower triangle id. The float `mt` path (closest_mt_float, below) goes
 // further: precomputed normal, a conservative division-free depth pre-test against the nearest hit
 // of any lane, divisions only for the final hit, and two rays per triangle load (closest_pair).
 // Each choice and what it measured: benchmarks.md#decision-precomputed-normal,
@@ -75,8 +75,9 @@ RAYVEC_INLINE LaneHits<V> test_paper(const TriangleArrays& T, uint32_t i, const 
                                      typename V::Mask active, V tlimit) {
   LaneHits<V> out;
   const uint32_t k = slot_offset(i);  // the step's lanes in each row (blocked rows)
-  const V e1x = V::load(T.e1x + k), e1y = V::load(T.e1y + k), e1z = V::load(T.e1z + k);
-  const V e2x = V::load(T.e2x + k), e2y = V::load(T.e2y + k), e2z = V::load(T.e2z + k);
+  const V v0x = V::load(T.v0x + k), v0y = V::load(T.v0y + k), v0z = V::load(T.v0z + k);
+  const V e1x = V::load(T.v1x + k) - v0x, e1y = V::load(T.v1y + k) - v0y, e1z = V::load(T.v1z + k) - v0z;
+  const V e2x = V::load(T.v2x + k) - v0x, e2y = V::load(T.v2y + k) - v0y, e2z = V::load(T.v2z + k) - v0z;
   // h = d × e2, a = e1 · h
   const V hx = r.dy * e2z - r.dz * e2y, hy = r.dz * e2x - r.dx * e2z, hz = r.dx * e2y - r.dy * e2x;
   const V a = e1x * hx + e1y * hy + e1z * hz;
@@ -84,7 +85,7 @@ RAYVEC_INLINE LaneHits<V> test_paper(const TriangleArrays& T, uint32_t i, const 
   if (!any(out.mask)) return out;
   const V f = V::broadcast(1.0f) / a;
   // u
-  const V sx = r.ox - V::load(T.v0x + k), sy = r.oy - V::load(T.v0y + k), sz = r.oz - V::load(T.v0z + k);
+  const V sx = r.ox - v0x, sy = r.oy - v0y, sz = r.oz - v0z;
   out.u = f * (sx * hx + sy * hy + sz * hz);
   out.mask = out.mask & (out.u >= V::broadcast(0.0f)) & (out.u <= V::broadcast(1.0f));
   if (!any(out.mask)) return out;
@@ -107,22 +108,9 @@ RAYVEC_INLINE LaneHits<V> test_mt(const TriangleArrays& T, uint32_t i, const Ray
   LaneHits<V> out;
   const uint32_t k = slot_offset(i);  // the step's lanes in each row (blocked rows)
   const V v0x = V::load(T.v0x + k), v0y = V::load(T.v0y + k), v0z = V::load(T.v0z + k);
-  V e1x, e1y, e1z, e2x, e2y, e2z;
-  if constexpr (sizeof(S) == 8) {  // double: edges from the exact vertices
-    e1x = V::load(T.v1x + k) - v0x;
-    e1y = V::load(T.v1y + k) - v0y;
-    e1z = V::load(T.v1z + k) - v0z;
-    e2x = V::load(T.v2x + k) - v0x;
-    e2y = V::load(T.v2y + k) - v0y;
-    e2z = V::load(T.v2z + k) - v0z;
-  } else {
-    e1x = V::load(T.e1x + k);
-    e1y = V::load(T.e1y + k);
-    e1z = V::load(T.e1z + k);
-    e2x = V::load(T.e2x + k);
-    e2y = V::load(T.e2y + k);
-    e2z = V::load(T.e2z + k);
-  }
+  // edges from the exact vertices (in double for vdouble)
+  const V e1x = V::load(T.v1x + k) - v0x, e1y = V::load(T.v1y + k) - v0y, e1z = V::load(T.v1z + k) - v0z;
+  const V e2x = V::load(T.v2x + k) - v0x, e2y = V::load(T.v2y + k) - v0y, e2z = V::load(T.v2z + k) - v0z;
   // h = d × e2, det = e1 · h
   const V hx = fmsub(r.dy, e2z, r.dz * e2y);
   const V hy = fmsub(r.dz, e2x, r.dx * e2z);
@@ -259,7 +247,8 @@ RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const TriangleArrays& T, const
                                                   const RayLanes<V>& r) {
   MtNumerators<V> out;
   // s = v0 − o, c = s × d
-  const V sx = at(T.v0x) - r.ox, sy = at(T.v0y) - r.oy, sz = at(T.v0z) - r.oz;
+  const V v0x = at(T.v0x), v0y = at(T.v0y), v0z = at(T.v0z);
+  const V sx = v0x - r.ox, sy = v0y - r.oy, sz = v0z - r.oz;
   const V cx = fmsub(sy, r.dz, sz * r.dy);
   const V cy = fmsub(sz, r.dx, sx * r.dz);
   const V cz = fmsub(sx, r.dy, sy * r.dx);
@@ -270,9 +259,10 @@ RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const TriangleArrays& T, const
   out.adet = abs(det);
   // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
   // one xor fewer than folding it)
-  const V e2x = at(T.e2x), e2y = at(T.e2y), e2z = at(T.e2z);
+  // e2 = v2 − v0 and e1 = v1 − v0: the fill's float subtraction, bit for bit (triangle_soa.h)
+  const V e2x = at(T.v2x) - v0x, e2y = at(T.v2y) - v0y, e2z = at(T.v2z) - v0z;
   out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), sign);
-  const V e1x = at(T.e1x), e1y = at(T.e1y), e1z = at(T.e1z);
+  const V e1x = at(T.v1x) - v0x, e1y = at(T.v1y) - v0y, e1z = at(T.v1z) - v0z;
   out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
   out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
   return out;

@@ -27,10 +27,10 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
   // by the threads that fill them (a serial memset was a third of the fill's time on 1M triangles)
   blocks_ = allocate_large_buffer(std::size_t(padded_) * kSlotRows * 4);
 
-  // row k of every block starts kBlock·k 4-byte values into the block; hot rows (v0, ng, e2, e1:
-  // what the float `mt` kernel reads) first, then the ids, then v1 and v2. Each row holds one type
-  // (the id row only int32, the others only float).
-  enum Row { kV0, kNg = 3, kE2 = 6, kE1 = 9, kId = 12, kV1 = 13, kV2 = 16 };
+  // row k of every block starts kBlock·k 4-byte values into the block; hot rows (v0, ng, v2, v1:
+  // what the float `mt` kernel reads) first, then the ids. Each row holds one type (the id row
+  // only int32, the others only float).
+  enum Row { kV0, kNg = 3, kV2 = 6, kV1 = 9, kId = 12 };
   float* base = static_cast<float*>(blocks_.get());
   int32_t* ids = reinterpret_cast<int32_t*>(base + std::size_t(kId) * kBlock);
 
@@ -49,17 +49,16 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
     }
     const Vec3f p0 = mesh.vertex(tri, 0), p1 = mesh.vertex(tri, 1), p2 = mesh.vertex(tri, 2);
     const Vec3f e1 = p1 - p0, e2 = p2 - p0, ng = cross(e2, e1);
-    const Vec3f rows[] = {p0, ng, e2, e1, p1, p2};
-    const int first[] = {kV0, kNg, kE2, kE1, kV1, kV2};
-    for (uint32_t r = 0; r < 6; ++r)
+    const Vec3f rows[] = {p0, ng, p2, p1};
+    const int first[] = {kV0, kNg, kV2, kV1};
+    for (uint32_t r = 0; r < 4; ++r)
       for (uint32_t a = 0; a < 3; ++a) slot[(first[r] + a) * kBlock] = rows[r][int(a)];
     id = static_cast<int32_t>(tri);
   }
   const auto row = [&](int k) -> const float* { return base + std::size_t(k) * kBlock; };
-  arrays_ = TriangleArrays{row(kV0),     row(kV0 + 1), row(kV0 + 2), row(kE1),     row(kE1 + 1),
-                           row(kE1 + 2), row(kE2),     row(kE2 + 1), row(kE2 + 2), row(kV1),
-                           row(kV1 + 1), row(kV1 + 2), row(kV2),     row(kV2 + 1), row(kV2 + 2),
-                           row(kNg),     row(kNg + 1), row(kNg + 2), ids,          count_};
+  arrays_ = TriangleArrays{row(kV0),     row(kV0 + 1), row(kV0 + 2), row(kV1),     row(kV1 + 1),
+                           row(kV1 + 2), row(kV2),     row(kV2 + 1), row(kV2 + 2), row(kNg),
+                           row(kNg + 1), row(kNg + 2), ids,          count_};
 }
 
 std::size_t TriangleSoA::bytes() const { return std::size_t(padded_) * kSlotRows * 4; }

@@ -1,13 +1,15 @@
 // TriangleSoA: triangles as structure-of-arrays, the layout of Sena et al. (2018) — one row per
 // coordinate, so W consecutive triangles load as one SIMD register per coordinate.
 // Departures from the paper:
-// - edges e1 = v1 − v0 and e2 = v2 − v0 are precomputed (the float kernels read v0, e1, e2 and the
-//   normal ng = e2 × e1); v1 and v2 are kept too so double-precision and watertight kernels work
-//   from the exact input vertices;
-// - the rows are blocked (AoSoA): slots come in blocks of kBlock = 16, and a block stores all 19
+// - the exact vertices v0, v1, v2 and the normal ng = e2 × e1 (e1 = v1 − v0, e2 = v2 − v0) are
+//   stored, not the edges: the kernels form e1 and e2 with one subtraction each, the very float
+//   operation the fill would do, so every kernel sees the same edges bit for bit, while the
+//   double-precision and watertight kernels keep the exact input vertices. 13 rows (52 bytes a slot)
+//   instead of 19 with stored edges (benchmarks.md#decision-vertices-not-edges);
+// - the rows are blocked (AoSoA): slots come in blocks of kBlock = 16, and a block stores all 13
 //   rows of its 16 slots one after the other (64 bytes a row): the 12 rows of the float `mt`
-//   kernel first, then the triangle ids (read for every hit: beside the rows, not in a separate
-//   array whose line is one more cache miss per hit leaf), then v1 and v2. A BVH leaf is then one
+//   kernel first (v0, ng, v2, v1), then the triangle ids (read for every hit: beside the rows, not
+//   in a separate array whose line is one more cache miss per hit leaf). A BVH leaf is then one
 //   contiguous run of memory instead of a piece of each of 12 arrays megabytes apart
 //   (benchmarks.md#decision-blocked-rows). Slot i of row pointer p is
 //   p[slot_offset(i)]; a SIMD step loads W lanes from a slot that is a multiple of W (W divides
@@ -30,9 +32,9 @@ namespace rayvec {
 struct TriangleMesh;
 
 inline constexpr uint32_t kSlotBlock = 16;  // slots per block
-inline constexpr uint32_t kSlotRows = 19;   // 4-byte rows per block
+inline constexpr uint32_t kSlotRows = 13;   // 4-byte rows per block
 inline constexpr uint32_t kSlotBlockFloats = kSlotBlock * kSlotRows;
-// The rows the float `mt` kernels read (v0, ng, e2, e1) are rows 0..kMtRows−1 of a block, v0x first,
+// The rows the float `mt` kernels read (v0, ng, v2, v1) are rows 0..kMtRows−1 of a block, v0x first,
 // so a block's hot part is the kMtRows·64 bytes from its slot-0 v0x.
 inline constexpr uint32_t kMtRows = 12;
 
@@ -46,8 +48,6 @@ static constexpr uint32_t slot_offset(uint32_t i) {
 // inline code shared with baseline units). Every row, ids included, is read at slot_offset(i).
 struct TriangleArrays {
   const float *v0x, *v0y, *v0z;
-  const float *e1x, *e1y, *e1z;
-  const float *e2x, *e2y, *e2z;
   const float *v1x, *v1y, *v1z;
   const float *v2x, *v2y, *v2z;
   // ng = e2 × e1, the unnormalized geometric normal (Embree's orientation), so the float `mt` kernel
