@@ -105,31 +105,37 @@ void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const Tr
       alignas(64) float dist[N];
       unsigned mask = boxes.hits(node.bounds, ray.tmin, tmax, dist);
       if (mask != 0) {
-        const unsigned first = unsigned(__builtin_ctz(mask));
+        const unsigned k0 = unsigned(__builtin_ctz(mask));
         mask &= mask - 1;
         if (mask == 0) {  // one child: enter it
-          ref = node.ref[first];
+          ref = node.ref[k0];
           continue;
         }
-        // several: sort by entry distance (insertion sort, N is small), push all but the nearest
-        uint32_t refs[N];
-        float ts[N];
-        int count = 1;
-        refs[0] = node.ref[first];
-        ts[0] = dist[first];
-        for (; mask != 0; mask &= mask - 1) {
+        const unsigned k1 = unsigned(__builtin_ctz(mask));
+        mask &= mask - 1;
+        if (mask == 0) {  // two (the common case): push the farther, enter the nearer
+          const bool first_nearer = dist[k0] < dist[k1];
+          const unsigned far = first_nearer ? k1 : k0;
+          stack[sp++] = StackItem{node.ref[far], dist[far]};
+          ref = node.ref[first_nearer ? k0 : k1];
+          continue;
+        }
+        // more: insertion sort straight onto the stack, farthest deepest (N is small), then enter
+        // the nearest. Sorting in place keeps no per-child arrays live, so the loop's state (node
+        // pointer, plane offsets, tmin) stays in registers instead of being spilled around a sort
+        // (benchmarks.md#decision-sort-on-the-stack).
+        const uint32_t base = sp;
+        for (mask |= (1u << k0) | (1u << k1); mask != 0; mask &= mask - 1) {
           const unsigned k = unsigned(__builtin_ctz(mask));
-          int j = count++;
-          while (j > 0 && ts[j - 1] < dist[k]) {  // descending: farthest first
-            refs[j] = refs[j - 1];
-            ts[j] = ts[j - 1];
+          const float d = dist[k];
+          uint32_t j = sp++;
+          while (j > base && stack[j - 1].t < d) {  // descending: farthest first
+            stack[j] = stack[j - 1];
             --j;
           }
-          refs[j] = node.ref[k];
-          ts[j] = dist[k];
+          stack[j] = StackItem{node.ref[k], d};
         }
-        for (int j = 0; j < count - 1; ++j) stack[sp++] = StackItem{refs[j], ts[j]};
-        ref = refs[count - 1];
+        ref = stack[--sp].ref;
         continue;
       }
     } else if (ref != kEmptyRef) {
