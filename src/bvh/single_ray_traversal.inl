@@ -98,12 +98,15 @@ void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const Tr
                          : static_cast<StackItem*>(__builtin_alloca(bvh.stack_size * sizeof(StackItem)));
   uint32_t sp = 0;
   uint32_t ref = start;
+  // tmin in a local: read through `ray` it is reloaded after every leaf (the leaf writes `hit`,
+  // whose floats may alias the ray's)
+  const float tmin = ray.tmin;
   float tmax = ray.tmax < hit.t ? ray.tmax : hit.t;
   for (;;) {
     if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];
       alignas(64) float dist[N];
-      unsigned mask = boxes.hits(node.bounds, ray.tmin, tmax, dist);
+      unsigned mask = boxes.hits(node.bounds, tmin, tmax, dist);
       if (mask != 0) {
         const unsigned k0 = unsigned(__builtin_ctz(mask));
         mask &= mask - 1;
