@@ -82,8 +82,8 @@ int run_render(RenderArgs& a) {
   if (!is_writable_image_path(a.output))
     throw InputError("-o: unknown image extension in '" + a.output + "' (use .png or .exr)");
   // Fail before the work, not after it: an unwritable -o is found by opening (and dropping) the
-  // temporary the image will later be written through.
-  { AtomicFile probe(a.output); }
+  // temporary the image will later be written through (AtomicFile::check).
+  AtomicFile::check(a.output);
   const RenderSettings::Aovs aov = parse_aovs(a.aov, a.output);
   if (a.heatmap && !aov.cost && !aov.bounces)
     throw InputError("--heatmap: draws the cost and bounces AOVs; add --aov cost,bounces (or one of them)");

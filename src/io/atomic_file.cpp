@@ -1,11 +1,13 @@
 #include "io/atomic_file.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 #include "io/input_error.h"
@@ -31,36 +33,111 @@ void unregister_temp(const char* path) {
   }
 }
 
+RuntimeError cannot_write(const std::string& path, int err) {
+  return RuntimeError("cannot write " + path + ": " + std::strerror(err) +
+                      " (check that the directory exists and is writable)");
+}
+
+struct Target {
+  std::string path;  // what is replaced or written through
+  bool write_through = false;
+};
+
+std::string link_text(const std::string& path) {
+  std::string text(4096, '\0');
+  const ssize_t n = ::readlink(path.c_str(), text.data(), text.size());
+  text.resize(n > 0 ? std::size_t(n) : 0);
+  return text;
+}
+
+// Decides how `path` is written (the table in atomic_file.h). A symbolic link is followed with
+// stat(), not realpath(), so the kernel's own links (/dev/stdout -> /proc/self/fd/1 -> pipe:[..])
+// still resolve to what they stand for.
+Target resolve_target(const std::string& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0) return {path, false};  // nothing there yet: open reports errors
+  std::string target = path;
+  if (S_ISLNK(st.st_mode)) {
+    if (::stat(path.c_str(), &st) != 0) {
+      const int err = errno;
+      if (err == ENOENT)
+        throw InputError(path, 0,
+                         "is a symbolic link to " + link_text(path) +
+                             ", which does not exist (create the target, or remove the link)");
+      throw cannot_write(path, err);
+    }
+    if (S_ISREG(st.st_mode)) {
+      // The temporary must sit beside the file the link names, so the rename lands there.
+      char* real = ::realpath(path.c_str(), nullptr);
+      if (!real) throw cannot_write(path, errno);
+      target = real;
+      std::free(real);
+    }
+  }
+  if (S_ISREG(st.st_mode)) return {target, false};
+  if (S_ISDIR(st.st_mode))
+    throw RuntimeError("cannot write " + path + ": it is a directory (give a file name)");
+  if (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)) return {target, true};
+  const char* what = S_ISSOCK(st.st_mode)  ? "a socket"
+                     : S_ISBLK(st.st_mode) ? "a block device"
+                                           : "a special file";
+  throw InputError(path, 0,
+                   std::string("is ") + what +
+                       ": rayvec writes only regular files, FIFOs and character devices such as /dev/null "
+                       "(give a file name)");
+}
+
 }  // namespace
 
-AtomicFile::AtomicFile(std::string path)
-    : path_(std::move(path)), temp_(path_ + ".tmp-" + std::to_string(::getpid())) {
-  // The temporary sits next to the path, so a directory given as output would only fail at the
-  // rename, after all the work: refuse it now.
-  struct stat st {};
-  if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw RuntimeError("cannot write " + path_ + ": it is a directory (give a file name)");
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  const Target t = resolve_target(path_);
+  target_ = t.path;
+  if (t.write_through) {
+    // O_NOCTTY: a terminal named by -o must not become our controlling terminal.
+    const int fd = ::open(target_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0 || !(file_ = ::fdopen(fd, "wb"))) {
+      const int err = errno;
+      if (fd >= 0) ::close(fd);
+      throw cannot_write(path_, err);
+    }
+    return;
+  }
+  temp_ = target_ + ".tmp-" + std::to_string(::getpid());
   file_ = std::fopen(temp_.c_str(), "wb");
-  if (!file_)
-    throw RuntimeError("cannot write " + path_ + ": " + std::strerror(errno) +
-                       " (check that the directory exists and is writable)");
+  if (!file_) throw cannot_write(path_, errno);
   register_temp(temp_.c_str());
+}
+
+void AtomicFile::check(const std::string& path) {
+  const Target t = resolve_target(path);
+  if (!t.write_through) {
+    AtomicFile probe(path);  // created and removed again
+    return;
+  }
+  if (::access(t.path.c_str(), W_OK) != 0) throw cannot_write(path, errno);
 }
 
 AtomicFile::~AtomicFile() {
   if (committed_) return;
   if (file_) std::fclose(file_);
+  if (temp_.empty()) return;
   unregister_temp(temp_.c_str());
   std::remove(temp_.c_str());
 }
 
 void AtomicFile::commit() {
   const bool write_ok = std::fflush(file_) == 0 && !std::ferror(file_);
+  const int write_err = errno;
   const bool close_ok = std::fclose(file_) == 0;
   file_ = nullptr;
-  if (!write_ok || !close_ok) throw RuntimeError("cannot write " + path_ + ": " + std::strerror(errno));
-  if (std::rename(temp_.c_str(), path_.c_str()) != 0)
-    throw RuntimeError("cannot rename " + temp_ + " to " + path_ + ": " + std::strerror(errno));
+  if (!write_ok || !close_ok)
+    throw RuntimeError("cannot write " + path_ + ": " + std::strerror(write_ok ? errno : write_err));
+  if (temp_.empty()) {
+    committed_ = true;
+    return;
+  }
+  if (std::rename(temp_.c_str(), target_.c_str()) != 0)
+    throw RuntimeError("cannot rename " + temp_ + " to " + target_ + ": " + std::strerror(errno));
   unregister_temp(temp_.c_str());
   committed_ = true;
 }
