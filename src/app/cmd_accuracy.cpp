@@ -9,6 +9,7 @@
 #include "accuracy/accuracy_report.h"
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/trace_options.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 
@@ -26,7 +27,7 @@ int run_accuracy(const AccuracyArgs& a) {
   if (a.scale < 1 || a.scale > 100) throw InputError("--scale: must be 1 to 100");
   if (a.size < 8 || a.size > 8192) throw InputError("--size: must be 8 to 8192");
   if (a.repeats < 1) throw InputError("--repeats: must be at least 1");
-  if (a.threads < 0) throw InputError("--threads: must be 0 (all cores) or more");
+  check_threads_option(a.threads);
   if (a.threads > 0) omp_set_num_threads(a.threads);
   AccuracySettings settings;
   settings.scale = a.scale;
@@ -54,7 +55,7 @@ void register_accuracy_command(CommandLine& cli) {
               "against an exact oracle, with throughput")
       .flag("--json", a.json, "print the results as JSON on stdout")
       .option("-o,--output", a.output, "write the markdown report to this file (e.g. docs/accuracy.md)")
-      .option("--threads", a.threads, "OpenMP threads (0: all cores)")
+      .option("--threads", a.threads, "OpenMP threads, 0 to 1024 (0: all cores)")
       .option("--scale", a.scale, "hard-case ray counts x scale (default 2)")
       .option("--size", a.size, "BVH primary rays: size x size pixels (default 512)")
       .option("--repeats", a.repeats, "timings: median of this many runs (default 3)")

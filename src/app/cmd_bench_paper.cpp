@@ -10,6 +10,7 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/trace_options.h"
 #include "bench/paper_bench.h"
 #include "bench/paper_scene.h"
 #include "io/input_error.h"
@@ -180,7 +181,7 @@ void print_json(const Options& o, Isa isa, int threads, uint32_t table_divisor, 
 int run(const Options& o) {
   Isa isa;
   if (const std::string err = resolve_isa(o.isa, isa); !err.empty()) throw InputError("--isa: " + err);
-  if (o.threads < 0) throw InputError("--threads: must be 0 (all cores) or more");
+  check_threads_option(o.threads);
   if (o.side_divisor < 0) throw InputError("--side-divisor: must be 1 or more");
   const int threads = o.threads > 0 ? o.threads : omp_get_num_procs();
   const auto models = chosen_models(o.models);
@@ -247,7 +248,7 @@ void register_bench_paper_command(Command& bench) {
   static Options o;
   bench.subcommand("paper", "Reproduce Sena et al. (2018): Table 1 and the thread-scaling run")
       .flag("--quick", o.quick, "scaled-down rays (Table 1: rays / 64; scaling: rays / 1024), < 1 min")
-      .option("--threads", o.threads, "most threads for the scaling run (0 = all cores)")
+      .option("--threads", o.threads, "most threads for the scaling run, 0 to 1024 (0 = all cores)")
       .flag("--json", o.json, "print one JSON object instead of tables")
       .option("--isa", o.isa, "vectorized ISA: auto, scalar, avx2 or avx512")
       .option("--models", o.models, "only these Table 1 rows, e.g. mod2,mod7")

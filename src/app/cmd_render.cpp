@@ -79,6 +79,7 @@ void write_heatmaps(const RenderArgs& a, const Image& image, bool quiet) {
 }
 
 int run_render(RenderArgs& a) {
+  check_threads_option(a.trace.threads);  // before the scene is loaded, not after
   if (!is_writable_image_path(a.output))
     throw InputError("-o: unknown image extension in '" + a.output + "' (use .png or .exr)");
   // Fail before the work, not after it: an unwritable -o is found by opening (and dropping) the

@@ -13,11 +13,17 @@ void add_trace_options(Command& cmd, TraceOptions& options, bool with_accel) {
               "ray-triangle arithmetic: mt (float, no epsilon), mt64 (double), paper "
               "(Sena et al. 2018: |det| < 1e-6 culled, t > 1e-6), watertight (Woop et al. 2013: no ray "
               "slips between triangles of a closed mesh), watertight64 (the same in double)")
-      .option("--threads", options.threads, "OpenMP threads (0 = all cores)");
+      .option("--threads", options.threads, "OpenMP threads, 0 to 1024 (0 = all cores)");
   if (with_accel)
     cmd.option("--accel", options.accel,
                "acceleration structure: bvh (default; wide SAH BVH) or brute (every triangle, the "
                "paper's workload); both return the same hits");
+}
+
+void check_threads_option(int threads) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw InputError("--threads: must be between 0 (all cores) and " + std::to_string(kMaxThreads) +
+                     ", got " + std::to_string(threads));
 }
 
 TraceConfig resolve_trace_options(const TraceOptions& options) {
@@ -29,7 +35,7 @@ TraceConfig resolve_trace_options(const TraceOptions& options) {
     throw InputError("--intersector: unknown '" + options.intersector +
                      "' (choose mt, mt64, paper, watertight or watertight64)");
   config.intersector = *intersector;
-  if (options.threads < 0) throw InputError("--threads: must be 0 (all cores) or more");
+  check_threads_option(options.threads);
   if (options.threads > 0) omp_set_num_threads(options.threads);
   return config;
 }

@@ -15,6 +15,14 @@ struct TraceOptions {
   int threads = 0;            // 0: all cores
 };
 
+// The most threads --threads accepts. libgomp fails far above it (33000 threads: exit 1, its
+// thread creation refused; 100000: SIGSEGV), and 1024 is well above the cores of any machine
+// rayvec runs on, where more threads than cores only cost memory and switches.
+constexpr int kMaxThreads = 1024;
+
+// InputError unless 0 <= threads <= kMaxThreads (0: all cores).
+void check_threads_option(int threads);
+
 // Declares the options on `cmd`; with_accel adds --accel.
 void add_trace_options(Command& cmd, TraceOptions& options, bool with_accel);
 

@@ -1,0 +1,45 @@
+// Command-line values outside what rayvec can honour are refused before any work (exit 2, the
+// option named, nothing written): --threads beyond kMaxThreads made libgomp crash or exit 1 and
+// left the output's temporary behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "test_support.h"
+
+namespace rayvec {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool empty_but(const std::string& dir, std::size_t n) {
+  return std::size_t(std::distance(fs::directory_iterator(dir), fs::directory_iterator())) == n;
+}
+
+TEST(OptionLimits, ThreadsAboveTheBoundAreRefusedForEveryCommand) {
+  const std::string dir = test::temp_dir("option_threads");
+  test::write_file(dir + "/m.obj", "v 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\n");
+  test::write_file(dir + "/r.csv", "0.2,0.2,0,0,0,1\n");
+  test::write_file(dir + "/v.csv", "0,0,1\n1,0,1\n0,1,1\n");
+  test::write_file(dir + "/f.csv", "0,1,2\n");
+  const std::string hits = "hits --mesh " + dir + "/m.obj --rays " + dir + "/r.csv -o " + dir + "/out.csv";
+  for (const std::string& args :
+       {hits + " --threads 100000", hits + " --threads 33000", hits + " --threads 1025",
+        "visibility --verts " + dir + "/v.csv --faces " + dir + "/f.csv -o " + dir +
+            "/out.txt --threads 5000",
+        "render -q " + dir + "/m.obj --width 4 --height 4 -o " + dir + "/out.png --threads 100000",
+        std::string("accuracy --threads 100000"), std::string("bench paper --threads 100000"),
+        "bench rays " + dir + "/m.obj --threads 100000"}) {
+    const auto r = test::run_cli(args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("--threads: must be between 0 (all cores) and 1024"), std::string::npos)
+        << args << ": " << r.err;
+  }
+  EXPECT_TRUE(empty_but(dir, 4));  // the four inputs only
+  const auto r = test::run_cli(hits + " --threads 1024");
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+}  // namespace
+}  // namespace rayvec
