@@ -9,17 +9,27 @@
 
 namespace {
 
-// Ctrl-C: remove any output still being written (AtomicFile temporaries), then exit 130.
+// Ctrl-C and every other signal whose default action ends the process: remove any output still
+// being written (AtomicFile temporaries), then exit 128 + the signal (130 for SIGINT).
 extern "C" void on_interrupt(int sig) {
   rayvec::remove_open_temporaries_on_signal();
   ::_exit(128 + sig);
 }
 
+void install_signal_handlers() {
+  // SIGPIPE included: a reader that goes away (`rayvec ... | head`) ends rayvec as it ends any
+  // filter, but without leaving a temporary behind.
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1, SIGUSR2})
+    std::signal(sig, on_interrupt);
+  // A file size limit (ulimit -f) makes write() fail with EFBIG instead: the output's own error
+  // path then says "File too large" and removes the temporary.
+  std::signal(SIGXFSZ, SIG_IGN);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  install_signal_handlers();
   rayvec::CommandLine cli("rayvec",
                           "rayvec: a SoA/SIMD Möller–Trumbore ray tracer.\n"
                           "Run `rayvec COMMAND --help` for each command's options and examples.");

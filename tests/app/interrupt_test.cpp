@@ -9,6 +9,8 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -94,6 +96,57 @@ TEST(Interrupt, SigintWhileTracingRemovesTheTemporaryAndKeepsTheOldOutput) {
   EXPECT_EQ(interrupt(pid), 130) << test::read_file(dir + "/stderr");
   EXPECT_FALSE(has_temporary(dir, "out.csv"));
   EXPECT_EQ(test::read_file(dir + "/out.csv"), "old\n");
+}
+
+// Every signal whose default action ends the process: its temporary is removed too (a hang-up
+// from a closed terminal, `timeout -s HUP`, Ctrl-\\, a pipe closed under us, ...).
+TEST(Interrupt, EveryTerminatingSignalRemovesTheTemporary) {
+  const std::string dir = test::temp_dir("interrupt_signals");
+  std::string rays;
+  rays.reserve(20'000'000);
+  for (int i = 0; i < 1'000'000; ++i) rays += "0.2,0.2,0,0,0,1\n";
+  std::string obj;
+  for (int i = 0; i < 2000; ++i) {
+    const std::string z = std::to_string(1 + i);
+    obj += "v 0 0 " + z + "\nv 1 0 " + z + "\nv 0 1 " + z + "\n";
+  }
+  for (int i = 0; i < 2000; ++i)
+    obj += "f " + std::to_string(3 * i + 1) + " " + std::to_string(3 * i + 2) + " " +
+           std::to_string(3 * i + 3) + "\n";
+  test::write_file(dir + "/m.obj", obj);
+  test::write_file(dir + "/r.csv", rays);
+  for (const int sig : {SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1, SIGUSR2}) {
+    const pid_t pid = spawn_cli({"hits", "--accel", "brute", "--mesh", dir + "/m.obj", "--rays",
+                                 dir + "/r.csv", "-o", dir + "/out.csv"},
+                                dir);
+    ASSERT_TRUE(wait_until([&] { return has_temporary(dir, "out.csv"); })) << "no temporary appeared";
+    ::kill(pid, sig);
+    int raw = 0;
+    ::waitpid(pid, &raw, 0);
+    EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 128 + sig) << strsignal(sig);
+    EXPECT_FALSE(has_temporary(dir, "out.csv")) << strsignal(sig);
+    EXPECT_FALSE(fs::exists(dir + "/out.csv")) << strsignal(sig);
+  }
+}
+
+// A file size limit (ulimit -f) is a write error with a message, not a SIGXFSZ death that leaves
+// the temporary.
+TEST(Interrupt, FileSizeLimitIsAnErrorThatLeavesNothing) {
+  const std::string dir = test::temp_dir("interrupt_fsize");
+  std::string rays;
+  for (int i = 0; i < 100'000; ++i) rays += "0.2,0.2,0,0,0,1\n";
+  test::write_file(dir + "/m.obj", "v 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\n");
+  test::write_file(dir + "/r.csv", rays);
+  const std::string cmd = "ulimit -f 64; '" + std::string(RAYVEC_CLI) + "' hits --mesh " + dir +
+                          "/m.obj --rays " + dir + "/r.csv -o " + dir + "/out.csv 2>" + dir + "/stderr";
+  const int raw = std::system(("bash -c \"" + cmd + "\"").c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 1) << test::read_file(dir + "/stderr");
+  EXPECT_NE(test::read_file(dir + "/stderr").find("cannot write " + dir + "/out.csv: File too large"),
+            std::string::npos)
+      << test::read_file(dir + "/stderr");
+  EXPECT_FALSE(has_temporary(dir, "out.csv"));
+  EXPECT_FALSE(fs::exists(dir + "/out.csv"));
 }
 
 TEST(Interrupt, SigintDuringARenderLeavesNoImage) {
