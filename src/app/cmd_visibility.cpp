@@ -13,6 +13,7 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/trace_options.h"
+#include "geometry/coordinate_range.h"
 #include "io/input_error.h"
 #include "io/output_sink.h"
 #include "io/visibility_csv.h"
@@ -42,6 +43,9 @@ Vec3f parse_origin(const std::string& text) {
   }
   if (k != 3 || pos != text.size() + 1)
     throw InputError("--origin: '" + text + "' is not X,Y,Z with three finite numbers (e.g. 0,0,-2.5)");
+  for (float c : xyz)
+    if (!coordinate_in_range(c))
+      throw InputError("--origin: '" + text + "' is beyond " + kCoordinateRangeText);
   return {xyz[0], xyz[1], xyz[2]};
 }
 

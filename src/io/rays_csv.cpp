@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "geometry/coordinate_range.h"
 #include "io/csv_fields.h"
 #include "io/text_file.h"
 #include "io/input_error.h"
@@ -34,6 +35,21 @@ void validate(const float* f, std::size_t n, const CsvPlace& where) {
   }
   if (f[3] == 0.0f && f[4] == 0.0f && f[5] == 0.0f)
     throw InputError(where.file, where.line, "direction is zero (dx = dy = dz = 0)");
+  for (int i = 0; i < 3; ++i) {
+    static const char* const kNames[] = {"ox", "oy", "oz"};
+    if (!coordinate_in_range(f[i]))
+      throw InputError(where.file, where.line,
+                       std::string("origin coordinate ") + kNames[i] + " = " + show(f[i]) + " is beyond " +
+                           kCoordinateRangeText);
+  }
+  const float longest = largest_component({f[3], f[4], f[5]});
+  if (longest < kMinDirection || longest > kMaxDirection)
+    throw InputError(where.file, where.line,
+                     "direction (" + show(f[3]) + ", " + show(f[4]) + ", " + show(f[5]) + ") is too " +
+                         (longest < kMinDirection ? "short" : "long") +
+                         ": its largest component must be between 1e-6 and 1e16 in magnitude, where the "
+                         "float intersectors answer correctly (scale it: t is measured in units of the "
+                         "direction; see docs/formats.md, Coordinate range)");
   if (n == 8) {
     if (std::isnan(f[6]) || std::isnan(f[7]))
       throw InputError(where.file, where.line,

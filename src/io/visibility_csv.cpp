@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "geometry/coordinate_range.h"
 #include "io/csv_fields.h"
 #include "io/text_file.h"
 #include "io/input_error.h"
@@ -18,9 +19,9 @@ void expect_three(std::string_view line, const CsvPlace& where, const char* what
         "found " + std::to_string(n) + (n == 1 ? " field" : " fields") + ", expected 3 (" + what + ")");
 }
 
-std::string show(double x) {
+std::string show(double x, const char* format = "%.17g") {
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
+  std::snprintf(buf, sizeof buf, format, x);
   return buf;
 }
 
@@ -37,6 +38,13 @@ std::vector<Vec3f> parse_verts_csv(std::string_view text, const std::string& nam
     expect_three(line, where, "x,y,z");
     float f[3];
     parse_fields(line, f, 3, where);
+    // Non-finite coordinates are allowed (their faces are dropped, their answer is nan); huge finite
+    // ones would give silently wrong answers.
+    for (int k = 0; k < 3; ++k)
+      if (std::isfinite(f[k]) && !coordinate_in_range(f[k]))
+        throw InputError(name, where.line,
+                         "coordinate " + std::to_string(k + 1) + " (" + show(double(f[k]), "%.9g") +
+                             ") is beyond " + kCoordinateRangeText);
     verts.push_back({f[0], f[1], f[2]});
   }
   return verts;

@@ -1,6 +1,12 @@
 // Intersector: which ray–triangle arithmetic a query uses. Every kernel (scalar, AVX2, AVX-512;
 // brute force or a BVH leaf) is instantiated once per intersector, so adding one (e.g. watertight)
 // means a new enum value and one instantiation per ISA unit — callers only pass the value through.
+//
+// Range: the float intersectors' products grow as |x|³ (t·det of `mt` and `paper`, T of
+// `watertight`, the latter also as 1/|d|); the contracts below hold for vertices and origins
+// within ±1e10 and directions whose largest component is in [1e-6, 1e16], which the loaders
+// enforce (geometry/coordinate_range.h). Beyond it a product may overflow to Inf: never a NaN or
+// a false hit, but a miss where the exact answer is a hit.
 #pragma once
 #include <optional>
 #include <string_view>

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "io/csv_fields.h"
+#include "geometry/coordinate_range.h"
 #include "io/input_error.h"
 
 namespace rayvec {
@@ -48,6 +49,10 @@ void check_coordinates(std::string_view rest, int needed, const char* kind, cons
       throw InputError(path, line_no,
                        std::string("`") + kind + "` coordinate " + std::to_string(k + 1) + " '" +
                            printable(token) + "' is not a finite number");
+    if (kind[0] == 'v' && kind[1] == '\0' && !coordinate_in_range(static_cast<float>(value)))
+      throw InputError(path, line_no,
+                       "`v` coordinate " + std::to_string(k + 1) + " '" + printable(token) + "' is beyond " +
+                           kCoordinateRangeText);
   }
 }
 

@@ -3,9 +3,11 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <initializer_list>
 
+#include "geometry/coordinate_range.h"
 #include "io/input_error.h"
 #include "io/text_file.h"
 #include "scene/default_view.h"
@@ -95,6 +97,7 @@ Camera read_camera(const Reader& r, const json& j) {
   r.keys(j, "camera", {"eye", "look_at", "up", "fov_y", "width", "height"});
   Camera c;
   if (j.contains("eye")) c.eye = r.vec3(j["eye"], "camera.eye");
+  if (!point_in_range(c.eye)) r.fail("camera.eye", std::string("is beyond ") + kCoordinateRangeText);
   if (j.contains("look_at")) c.look_at = r.vec3(j["look_at"], "camera.look_at");
   if (j.contains("up")) c.up = r.vec3(j["up"], "camera.up");
   if (j.contains("fov_y")) c.fov_y = r.number(j["fov_y"], "camera.fov_y");
@@ -235,7 +238,16 @@ Scene load_scene_json(const std::string& path) {
         o.contains("transform") ? read_transform(r, o["transform"], where + ".transform") : Transform{};
     const MaterialOverride m =
         o.contains("material") ? read_material(r, o["material"], where + ".material") : MaterialOverride{};
+    const std::size_t first_vertex = scene.mesh.positions.size();
     scene.add_object(load_obj(obj), t, m);
+    for (std::size_t v = first_vertex; v < scene.mesh.positions.size(); ++v)
+      if (!point_in_range(scene.mesh.positions[v])) {
+        const Vec3f p = scene.mesh.positions[v];
+        char at[96];
+        std::snprintf(at, sizeof at, "(%g, %g, %g)", double(p.x), double(p.y), double(p.z));
+        r.fail(where + ".transform",
+               "moves a vertex of " + obj + " to " + at + ", beyond " + kCoordinateRangeText);
+      }
   }
   // Without a camera or lights, rayvec's defaults (default_view.h), as for a bare OBJ.
   scene.default_camera = !root.contains("camera");

@@ -49,8 +49,9 @@ TEST(RaysCsv, ReadsBackShortestFloatText) {
   const float values[] = {0.1f, 1.0f / 3.0f, 3.4028235e38f, 1.17549435e-38f, 1e-45f, -7.006492e-44f};
   for (float x : values) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.9g,0,0,1,0,0\n", x);
-    EXPECT_EQ(parse_rays_csv(buf, "r.csv")[0].org.x, x) << buf;
+    // Read as tmin: origins are bounded by the coordinate range, tmin only by tmax.
+    std::snprintf(buf, sizeof buf, "0,0,0,1,0,0,%.9g,inf\n", x);
+    EXPECT_EQ(parse_rays_csv(buf, "r.csv")[0].tmin, x) << buf;
   }
 }
 
