@@ -1,8 +1,28 @@
 #include "render/surface_point.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayvec {
+
+namespace {
+
+float max_abs(Vec3f a) { return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)}); }
+
+// The unit normal of a triangle of any size. The edges are scaled to a largest component of 1
+// before the cross product: unscaled, its squared length underflows float for triangles below
+// about 1e-10 across (and overflows above about 1e19), and normalize() then yields NaN or Inf.
+// A zero-area triangle (never hit) gets a zero vector.
+Vec3f unit_normal(Vec3f e1, Vec3f e2) {
+  const float s1 = max_abs(e1), s2 = max_abs(e2);
+  if (!(s1 > 0) || !(s2 > 0)) return {0, 0, 0};
+  const Vec3f c = cross(e1 / s1, e2 / s2);
+  const float sc = max_abs(c);
+  if (!(sc > 0)) return {0, 0, 0};
+  return normalize(c / sc);
+}
+
+}  // namespace
 
 SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
   const std::size_t t = static_cast<std::size_t>(hit.tri);
@@ -10,7 +30,8 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
               e2 = scene.mesh.vertex(t, 2) - v0;
   SurfacePoint s;
   s.p = v0 + e1 * hit.u + e2 * hit.v;
-  s.ng = normalize(cross(e1, e2));
+  s.ng = unit_normal(e1, e2);
+  if (s.ng == Vec3f{0, 0, 0}) s.ng = -normalize(ray.dir);  // degenerate: face the ray
   s.entering = dot(s.ng, ray.dir) < 0;
   if (!s.entering) s.ng = -s.ng;
   s.ns = s.ng;
@@ -18,8 +39,8 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
     const auto& n = scene.corner_normals[t];
     const float w = 1.0f - hit.u - hit.v;
     const Vec3f ns = n[0] * w + n[1] * hit.u + n[2] * hit.v;
-    if (length(ns) > 0) {
-      s.ns = normalize(ns);
+    if (max_abs(ns) > 0) {
+      s.ns = normalize(ns / max_abs(ns));
       if (dot(s.ns, s.ng) < 0) s.ns = -s.ns;
     }
   }

@@ -2,6 +2,7 @@
 // Unknown keys are errors naming the key: a typo such as "fov" for "fov_y" must not pass silently.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -256,14 +257,40 @@ Scene load_scene_json(const std::string& path) {
   return scene;
 }
 
+namespace {
+
+// Secondary rays start off their surface by offset_ray_origin(), whose absolute offset near the
+// origin (1/65536) is tested for scenes from 1e-4 across up (offset_ray_test.cpp); in a smaller
+// scene it would move every shadow and reflection ray out of the scene.
+constexpr float kMinSceneSize = 1e-4f;
+
+Scene checked_size(Scene scene, const std::string& path) {
+  const auto [lo, hi] = scene.bounds();
+  const float size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  if (size < kMinSceneSize) {
+    char text[160];
+    std::snprintf(text, sizeof text, "the scene is %g across, below %g, the smallest size rayvec renders",
+                  double(size), double(kMinSceneSize));
+    throw InputError(
+        path, 0,
+        std::string(text) +
+            " (secondary-ray offsets would leave it); scale it up with a scene JSON "
+            "transform, e.g. {\"objects\": [{\"obj\": \"m.obj\", \"transform\": {\"scale\": 1e6}}]}");
+  }
+  return scene;
+}
+
+}  // namespace
+
 Scene load_scene(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".json") return load_scene_json(path);
+  if (ext == ".json") return checked_size(load_scene_json(path), path);
   if (ext == ".obj") {
     Scene scene;
     scene.source = path;
     scene.add_object(load_obj(path), Transform{});
+    scene = checked_size(std::move(scene), path);
     frame_bounding_box(scene);
     return scene;
   }
