@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <sstream>
 
 #include "app/command_line.h"
@@ -85,6 +86,14 @@ int run_render(RenderArgs& a) {
   // Fail before the work, not after it: an unwritable -o is found by opening (and dropping) the
   // temporary the image will later be written through (AtomicFile::check).
   AtomicFile::check(a.output);
+  if (!a.stats_json.empty()) {
+    std::error_code e1, e2;
+    if (std::filesystem::weakly_canonical(a.stats_json, e1) ==
+            std::filesystem::weakly_canonical(a.output, e2) &&
+        !e1 && !e2)
+      throw InputError("--stats-json: " + a.stats_json + " is the image -o writes (give another file name)");
+    AtomicFile::check(a.stats_json);
+  }
   const RenderSettings::Aovs aov = parse_aovs(a.aov, a.output);
   if (a.heatmap && !aov.cost && !aov.bounces)
     throw InputError("--heatmap: draws the cost and bounces AOVs; add --aov cost,bounces (or one of them)");

@@ -53,6 +53,8 @@ int run_visibility(const VisibilityArgs& args) {
   const Vec3f origin = parse_origin(args.origin);
   const TraceConfig config = resolve_trace_options(args.trace);
   const AccelKind kind = resolve_accel(args.trace);
+  if (args.verts == "-" && args.faces == "-")
+    throw InputError("--verts and --faces cannot both read standard input (give one of them as a file)");
   const std::vector<Vec3f> verts = read_verts_csv(args.verts);
   const auto faces = read_faces_csv(args.faces, verts.size());
   OutputSink out(args.output);

@@ -76,6 +76,29 @@ Command& CommandLine::command(const std::string& name, const std::string& descri
 
 int CommandLine::main(int argc, char** argv) {
   CLI::App& app = impl_->app;
+  // CLI11 takes an unknown word for a stray argument and says only "A subcommand is required":
+  // name the word and the commands instead.
+  {
+    CLI::App* level = &app;
+    std::string path = app.get_name();
+    for (int i = 1; i < argc && argv[i][0] != '-'; ++i) {
+      const auto subs = level->get_subcommands([](CLI::App*) { return true; });
+      if (subs.empty()) break;
+      CLI::App* next = nullptr;
+      std::string names;
+      for (CLI::App* sub : subs) {
+        if (sub->get_name() == argv[i]) next = sub;
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+      }
+      if (!next) {
+        std::cerr << path << ": unknown command '" << argv[i] << "' (commands: " << names << "; run `" << path
+                  << " --help`)\n";
+        return 2;
+      }
+      level = next;
+      path += " " + next->get_name();
+    }
+  }
   try {
     app.parse(argc, argv);
     return 0;

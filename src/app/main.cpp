@@ -1,5 +1,9 @@
 // rayvec: the command-line front end. Each subcommand lives in its own cmd_*.cpp and registers here.
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <cstdlib>
 #include <unistd.h>
 
@@ -46,5 +50,13 @@ int main(int argc, char** argv) {
   rayvec::register_bench_paper_command(bench);
   rayvec::register_bench_rays_command(bench);
   rayvec::register_bench_obj_command(bench);
-  return cli.main(argc, argv);
+  int status = cli.main(argc, argv);
+  // Every command's output (and --help) ends here: a full disk or a closed pipe found only at the
+  // final flush must not pass for success (`rayvec info > /dev/full`).
+  std::cout.flush();
+  if ((std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout) && status == 0) {
+    std::fprintf(stderr, "rayvec: cannot write standard output: %s\n", std::strerror(errno ? errno : EIO));
+    status = 1;
+  }
+  return status;
 }

@@ -110,4 +110,12 @@ void parse_fields(std::string_view line, double* out, std::size_t n, const CsvPl
   parse_fields_as(line, out, n, where);
 }
 
+void check_no_inner_cr(std::string_view line, const CsvPlace& where) {
+  const std::size_t cr = line.find('\r');
+  if (cr != std::string_view::npos && cr + 1 < line.size())
+    throw InputError(where.file, where.line,
+                     "has a carriage return (CR) inside a line: lone-CR line ends (classic Mac OS text) "
+                     "are not read; convert the file to LF or CRLF line ends (e.g. tr '\\r' '\\n')");
+}
+
 }  // namespace rayvec

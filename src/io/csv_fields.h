@@ -42,6 +42,10 @@ struct CsvPlace {
 // (any case, optional sign) give non-finite values, which the caller judges. A field that is empty
 // or not entirely a number throws `file:line: field K 'text' is not a number`; a finite number too
 // large for the type throws `... is out of range`. Underflow gives 0 or a subnormal.
+// InputError when `line` holds a CR before its end: a file with lone-CR line ends (classic Mac OS
+// text) reads as one long line, and "found 11 fields" would not say why. Called on the error path.
+void check_no_inner_cr(std::string_view line, const CsvPlace& where);
+
 void parse_fields(std::string_view line, float* out, std::size_t n, const CsvPlace& where);
 void parse_fields(std::string_view line, double* out, std::size_t n, const CsvPlace& where);
 

@@ -80,10 +80,12 @@ RayBatch parse_rays_csv(std::string_view text, const std::string& name) {
       continue;
     }
     data_seen = true;
-    if (n != 6 && n != 8)
+    if (n != 6 && n != 8) {
+      check_no_inner_cr(line, where);
       throw InputError(name, where.line,
                        "found " + std::to_string(n) + (n == 1 ? " field" : " fields") +
                            ", expected 6 (ox,oy,oz,dx,dy,dz) or 8 (ox,oy,oz,dx,dy,dz,tmin,tmax)");
+    }
     float f[8] = {0, 0, 0, 0, 0, 0, 0.0f, kInf};
     parse_fields(line, f, n, where);
     validate(f, n, where);
@@ -92,6 +94,8 @@ RayBatch parse_rays_csv(std::string_view text, const std::string& name) {
   return rays;
 }
 
-RayBatch read_rays_csv(const std::string& path) { return parse_rays_csv(read_text_file(path), path); }
+RayBatch read_rays_csv(const std::string& path) {
+  return parse_rays_csv(read_text_file(path), text_name(path));
+}
 
 }  // namespace rayvec

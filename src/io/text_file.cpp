@@ -44,8 +44,12 @@ std::size_t max_input_bytes() {
   return mb * 1000000;
 }
 
-std::string read_text_file(const std::string& path) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+std::string read_text_file(const std::string& given) {
+  // "-" is standard input (named "stdin" in messages), as `-o -` is standard output.
+  const bool from_stdin = given == "-";
+  const std::string path = from_stdin ? "stdin" : given;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(
+      std::fopen(from_stdin ? "/dev/stdin" : path.c_str(), "rb"), &std::fclose);
   if (!f) throw InputError(path, 0, std::string("cannot read: ") + std::strerror(errno));
   const std::size_t limit = max_input_bytes();
   struct stat st {};

@@ -20,6 +20,9 @@ std::size_t max_input_bytes();
 // while reading, so /dev/zero fails at once. A file (or stream) longer than max_input_bytes()
 // throws `path: is larger than the N MB input limit ...` naming RAYVEC_MAX_INPUT_MB; a regular file
 // is judged by its size before any byte is read.
+// "-" reads standard input; messages then name it "stdin" (see text_name).
 std::string read_text_file(const std::string& path);
+// The name read_text_file's messages use for `path`: "stdin" for "-", else the path.
+inline std::string text_name(const std::string& path) { return path == "-" ? "stdin" : path; }
 
 }  // namespace rayvec

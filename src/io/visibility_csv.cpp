@@ -13,6 +13,7 @@ namespace {
 
 void expect_three(std::string_view line, const CsvPlace& where, const char* what) {
   const std::size_t n = count_fields(line);
+  if (n != 3) check_no_inner_cr(line, where);
   if (n != 3)
     throw InputError(
         where.file, where.line,
@@ -81,11 +82,11 @@ std::vector<std::array<uint32_t, 3>> parse_faces_csv(std::string_view text, cons
 }
 
 std::vector<Vec3f> read_verts_csv(const std::string& path) {
-  return parse_verts_csv(read_text_file(path), path);
+  return parse_verts_csv(read_text_file(path), text_name(path));
 }
 
 std::vector<std::array<uint32_t, 3>> read_faces_csv(const std::string& path, std::size_t vertex_count) {
-  return parse_faces_csv(read_text_file(path), path, vertex_count);
+  return parse_faces_csv(read_text_file(path), text_name(path), vertex_count);
 }
 
 }  // namespace rayvec

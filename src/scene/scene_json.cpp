@@ -10,6 +10,7 @@
 
 #include "geometry/coordinate_range.h"
 #include "io/input_error.h"
+#include "kernels/intersector.h"
 #include "io/text_file.h"
 #include "scene/default_view.h"
 #include "scene/obj_loader.h"
@@ -183,7 +184,12 @@ RenderSettings read_render(const Reader& r, const json& j) {
       r.fail("render.min_contribution", "must be between 0 and 1");
   }
   if (j.contains("spp")) s.spp = r.integer(j["spp"], "render.spp", 1, 4096);
-  if (j.contains("intersector")) s.intersector = r.string(j["intersector"], "render.intersector");
+  if (j.contains("intersector")) {
+    s.intersector = r.string(j["intersector"], "render.intersector");
+    if (!parse_intersector(s.intersector))
+      r.fail("render.intersector",
+             "unknown '" + s.intersector + "' (choose mt, mt64, paper, watertight or watertight64)");
+  }
   return s;
 }
 
