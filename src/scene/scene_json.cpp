@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cctype>
+#include <vector>
+#include <set>
+#include <map>
 #include <cstdio>
 #include <filesystem>
 #include <initializer_list>
@@ -195,11 +199,65 @@ RenderSettings read_render(const Reader& r, const json& j) {
 
 }  // namespace
 
+// nlohmann keeps the last of two equal keys in an object; a scene with two "width"s is a mistake the
+// user should hear about. Keys are seen in text order, so the n-th `"key":` in the text is the
+// n-th key event of that name: that gives the duplicate's line.
+class DuplicateKeys {
+ public:
+  json::parser_callback_t callback() {
+    return [this](int, json::parse_event_t event, json& parsed) {
+      if (event == json::parse_event_t::object_start) {
+        keys_.emplace_back();
+        path_.emplace_back();
+      } else if (event == json::parse_event_t::object_end && !keys_.empty()) {
+        keys_.pop_back();
+        path_.pop_back();
+      } else if (event == json::parse_event_t::key && !keys_.empty()) {
+        const std::string key = parsed.get<std::string>();
+        const int n = ++seen_[key];
+        path_.back() = key;
+        if (!keys_.back().insert(key).second && first_.empty()) {
+          for (const std::string& k : path_) first_ += (first_.empty() ? "" : ".") + k;
+          occurrence_ = n;
+          key_ = key;
+        }
+      }
+      return true;
+    };
+  }
+
+  void report(const std::string& file, const std::string& text) const {
+    if (first_.empty()) return;
+    std::size_t line = 0;
+    int n = 0;
+    const std::string quoted = "\"" + key_ + "\"";
+    for (std::size_t at = text.find(quoted); at != std::string::npos; at = text.find(quoted, at + 1)) {
+      std::size_t after = at + quoted.size();
+      while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+      if (after < text.size() && text[after] == ':' && ++n == occurrence_) {
+        line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+        break;
+      }
+    }
+    throw InputError(file, line,
+                     "duplicate key '" + first_ + "' (a JSON object holds one value per key; remove one)");
+  }
+
+ private:
+  std::vector<std::set<std::string>> keys_;
+  std::vector<std::string> path_;
+  std::map<std::string, int> seen_;
+  std::string first_, key_;
+  int occurrence_ = 0;
+};
+
 Scene load_scene_json(const std::string& path) {
   const std::string text = read_text_file(path);  // bounded; rejects binary data and UTF-16
   json root;
   try {
-    root = json::parse(text);
+    DuplicateKeys dup;
+    root = json::parse(text, dup.callback());
+    dup.report(path, text);
   } catch (const json::parse_error& e) {
     const std::size_t byte = std::min<std::size_t>(e.byte, text.size());
     const auto line = 1 + std::count(text.begin(), text.begin() + byte, '\n');
