@@ -4,7 +4,7 @@
 # tests/data/fuzz_corpus/<target>/ (the corpus grown by earlier runs is kept in build-fuzz/corpus/).
 # Exits non-zero at the first crash, leak, hang (-timeout) or sanitizer report, naming the
 # reproducer file; turn it into a regression test under tests/data/ (see docs/reliability.md).
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: obj scene_json rays_csv visibility_csv image
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: obj mtl scene_json rays_csv visibility_csv image
 #        scripts/fuzz.sh --runs N [TARGET...]      each target runs exactly N executions (no time
 #                                                  limit): the long runs of docs/reliability.md
 set -euo pipefail
@@ -22,7 +22,7 @@ else
   what="${seconds} s"
 fi
 targets=("$@")
-((${#targets[@]})) || targets=(obj scene_json rays_csv visibility_csv image)
+((${#targets[@]})) || targets=(obj mtl scene_json rays_csv visibility_csv image)
 build="${RAYVEC_FUZZ_BUILD:-$root/build-fuzz}"
 
 "$root/scripts/install-deps.sh" --with-fuzz
