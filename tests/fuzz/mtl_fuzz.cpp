@@ -1,8 +1,8 @@
 // Fuzzes the MTL path through rayvec's OBJ loader: the input is the text of m.mtl, pulled in by a
-// fixed OBJ that uses two of its materials (`a`, `b`) and one it may not define. tinyobjloader
-// parses the MTL; load_obj turns its materials (colours, illum, texture names and options) into
-// rayvec's. The only acceptable failure is InputError; any other exception, crash, sanitizer report
-// or hang is a bug.
+// fixed OBJ that uses two of its materials (`a`, `b`) and one it may not define. load_obj reads the
+// MTL through read_mtl_file (rayvec's MTL parser, its validation and the texture look-up) while
+// tinyobjloader numbers the `usemtl` names. The only acceptable failure is InputError; any other
+// exception, crash, sanitizer report or hang is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
