@@ -95,7 +95,7 @@ void register_hits_command(CommandLine& cli) {
   Command& cmd =
       cli.command("hits", "Trace the rays of a CSV file against an OBJ mesh; print the hits as CSV");
   cmd.required("--mesh", args.mesh, "the triangle mesh (Wavefront OBJ)")
-      .required("--rays", args.rays, "the rays (CSV: ox,oy,oz,dx,dy,dz[,tmin,tmax])")
+      .required("--rays", args.rays, "the rays (CSV: ox,oy,oz,dx,dy,dz[,tmin,tmax]; - reads standard input)")
       .flag("--any", args.any, "any-hit (occlusion) query: print ray,hit with 0/1")
       .option("-o,--output", args.output, "output CSV file (default: standard output)");
   add_trace_options(cmd, args.trace, true);

@@ -122,8 +122,8 @@ void register_visibility_command(CommandLine& cli) {
   static VisibilityArgs args;
   Command& cmd =
       cli.command("visibility", "Which vertices are visible from an origin (verts.csv + meshes.csv)");
-  cmd.required("--verts", args.verts, "vertex rows x,y,z (CSV)")
-      .required("--faces", args.faces, "triangles as three 0-based vertex rows (CSV)")
+  cmd.required("--verts", args.verts, "vertex rows x,y,z (CSV; - reads standard input)")
+      .required("--faces", args.faces, "triangles as three 0-based vertex rows (CSV; - reads standard input)")
       .option("--origin", args.origin, "the eye point X,Y,Z")
       .option("-o,--output", args.output, "output file (default: standard output)");
   add_trace_options(cmd, args.trace, true);
