@@ -10,6 +10,8 @@
 #include <cmath>
 #include <system_error>
 
+#include "geometry/coordinate_range.h"
+
 namespace rayvec {
 namespace {
 
@@ -134,6 +136,10 @@ class ChunkParser {
       if (!in.at_line_end() && !in.number(x[1])) return false;
       c_.texcoords.push_back({x[0], x[1]});
     } else {
+      // A position beyond the intersectors' range is an error: the full reader reports it with its line.
+      if (kind == kV &&
+          !(coordinate_in_range(x[0]) && coordinate_in_range(x[1]) && coordinate_in_range(x[2])))
+        return false;
       (kind == kV ? c_.positions : c_.normals).push_back({x[0], x[1], x[2]});
     }
     return in.next_line();
