@@ -44,7 +44,9 @@ enum class Intersector {
   // whatever the rounding. Rays that only graze the surface (tangent at an edge or vertex) are
   // not covered. Hits are decided on the ray's sheared, translated copy of the triangle, so near
   // an edge the answer may differ from the exact one by float rounding (on the safe side for
-  // closed meshes). Accepted when det = U + V + W is nonzero and finite and tmin <= t <= tmax;
+  // closed meshes). Accepted when det = U + V + W is nonzero and finite, tmin <= t <= tmax, and t
+  // exceeds a bound on its own rounding error (watertight_t_error, after Pharr et al.'s
+  // conservative t): a ray leaving a surface from an offset origin never finds it again;
   // degenerate (zero-area) triangles and rays parallel to the plane have det = 0 and never hit.
   // A NaN or Inf in the ray's origin, direction, tmin or tmax, or in a vertex, never yields a hit
   // or a NaN output. No FMA: the same ids and t on every ISA.

@@ -128,7 +128,33 @@ RAYVEC_COLD bool zero_area(const TriangleArrays& T, uint32_t j) {
          same_product(e1x, e2y, e1y, e2x);
 }
 
-// The lanes of triangles [i, i + W) that the ray hits with tmin <= t < tlimit.
+// A bound on the rounding error of t = T/|det| for a lane that passed the edge tests, after the
+// analysis of Pharr, Jakob & Humphreys (Physically Based Rendering, 3rd ed., 3.9.6) with one change:
+// t = z0 + Σ bᵢ(zᵢ − z0) for the barycentrics bᵢ = eᵢ/det, so the edge functions' error (δe: from the
+// translated and sheared x, y; the shear's part scales with the unscaled depths) moves t by at most
+// δe·(spread of the depths)/|det| — not by δe·max|z|, which would grow without limit as a triangle shrinks
+// and make tiny closed meshes leak. The depth terms: T's sum (3γ3·max|e|·max|z|, with max|e| <= |det| since
+// all eᵢ share det's sign), the depths themselves (γ3·max|z|), det's rounding (γ2·t). A hit is reported only
+// beyond the bound, so a ray leaving a surface — a shadow or secondary ray offset from its hit point by a few
+// ulps, even at a grazing angle — cannot find that surface again at a t that rounding made zero or positive.
+template <class V>
+RAYVEC_INLINE V watertight_t_error(V ax, V ay, V az, V bx, V by, V bz, V cx, V cy, V cz, V sz, V adet) {
+  using S = typename V::Scalar;
+  constexpr S eps = S(0x1p-24);  // unit roundoff of float
+  auto gamma = [](int n) { return V::broadcast(S(n) * eps / (S(1) - S(n) * eps)); };
+  auto max3 = [](V a, V b, V c) { return vmax(vmax(abs(a), abs(b)), abs(c)); };
+  const V za = sz * az, zb = sz * bz, zc = sz * cz;
+  const V max_z = max3(za, zb, zc), max_x = max3(ax, bx, cx), max_y = max3(ay, by, cy);
+  const V spread_z = max3(za - zb, zb - zc, zc - za);
+  // the shear's error in x and y is relative to Sx·z with |Sx| <= 1: the unscaled depths bound it
+  const V max_dz = max3(az, bz, cz);
+  const V delta_x = gamma(5) * (max_x + max_dz), delta_y = gamma(5) * (max_y + max_dz);
+  const V delta_e = V::broadcast(S(2)) * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+  return V::broadcast(S(7)) * gamma(3) * max_z + V::broadcast(S(5)) * delta_e * spread_z / adet;
+}
+
+// The lanes of triangles [i, i + W) that the ray hits with tmin <= t < tlimit and t beyond its
+// rounding error (watertight_t_error).
 template <class V>
 RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const WatertightRay<V>& r, uint32_t i,
                                           typename V::Mask active, V tlimit) {
@@ -176,6 +202,11 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
                         sign);
   out.t = tn / adet;
   out.mask = out.mask & (out.t >= r.tmin) & (out.t < tlimit);
+  // float only: in double the translated vertices are exact and the rest rounds at 2^-53, far inside
+  // the few float ulps by which a secondary ray leaves its surface
+  if constexpr (sizeof(S) == 4)
+    if (any(out.mask))
+      out.mask = out.mask & (out.t > watertight_t_error(ax, ay, az, bx, by, bz, cx, cy, cz, r.sz, adet));
   if (any(out.mask)) {
     // zero-area triangles never hit (checked only for the rare lanes that would hit)
     float keep[V::W];
