@@ -4,6 +4,7 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace rayvec {
 
@@ -24,5 +25,16 @@ std::size_t max_input_bytes();
 std::string read_text_file(const std::string& path);
 // The name read_text_file's messages use for `path`: "stdin" for "-", else the path.
 inline std::string text_name(const std::string& path) { return path == "-" ? "stdin" : path; }
+
+// The line of `text` that starts at `pos`, without its end, and `pos` moved past that end. Lines end
+// as tinyobjloader ends them — LF, CRLF or a lone CR (old Mac files) — so the OBJ and MTL readers'
+// line numbers are the ones a user's editor shows. Call while pos < text.size().
+inline std::string_view next_text_line(std::string_view text, std::size_t& pos) {
+  std::size_t end = text.find_first_of("\r\n", pos);
+  if (end == std::string_view::npos) end = text.size();
+  const std::string_view line = text.substr(pos, end - pos);
+  pos = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+  return line;
+}
 
 }  // namespace rayvec

@@ -9,6 +9,7 @@
 #include "io/csv_fields.h"
 #include "geometry/coordinate_range.h"
 #include "io/input_error.h"
+#include "io/text_file.h"
 
 namespace rayvec {
 namespace {
@@ -129,10 +130,7 @@ void check_obj_text(std::string_view text, const std::string& path) {
   // only, a CR-only file would be one line here and its later lines would go unchecked.
   std::size_t pos = 0, line_no = 0;
   while (pos < text.size()) {
-    std::size_t end = text.find_first_of("\r\n", pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view rest = text.substr(pos, end - pos);
-    pos = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+    std::string_view rest = next_text_line(text, pos);
     ++line_no;
     const std::string_view keyword = next_token(rest);
     if (keyword == "v") {
