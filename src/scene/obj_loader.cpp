@@ -49,7 +49,7 @@ class MtlReader : public tinyobj::MaterialReader {
       by_name->emplace(m.name, index);
       // tinyobjloader's `usemtl` reads only the first word of a name with spaces.
       by_name->emplace(m.name.substr(0, m.name.find_first_of(" \t")), index);
-      tinyobj::material_t named;
+      tinyobj::material_t named{};  // value-initialized: tinyobjloader leaves its members unset
       named.name = m.name;
       materials->push_back(named);
       read.push_back(std::move(m));
