@@ -103,9 +103,15 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
     return;
   }
   temp_ = target_ + ".tmp-" + std::to_string(::getpid());
-  file_ = std::fopen(temp_.c_str(), "wb");
-  if (!file_) throw cannot_write(path_, errno);
+  // Registered before the file exists and unregistered only after it is gone (below): a signal at
+  // any moment in between finds it in the registry.
   register_temp(temp_.c_str());
+  file_ = std::fopen(temp_.c_str(), "wb");
+  if (!file_) {
+    const int err = errno;
+    unregister_temp(temp_.c_str());
+    throw cannot_write(path_, err);
+  }
 }
 
 void AtomicFile::check(const std::string& path) {
@@ -121,8 +127,8 @@ AtomicFile::~AtomicFile() {
   if (committed_) return;
   if (file_) std::fclose(file_);
   if (temp_.empty()) return;
-  unregister_temp(temp_.c_str());
   std::remove(temp_.c_str());
+  unregister_temp(temp_.c_str());
 }
 
 void AtomicFile::commit() {
