@@ -2,31 +2,12 @@
 find_package(OpenMP REQUIRED)
 find_package(tinyobjloader REQUIRED)
 find_package(FastFloat REQUIRED)  # libfast-float-dev: header only, obj_chunk.cpp
-find_package(OpenImageIO REQUIRED CONFIG)  # only in the librayvec_oiio.so module (src/CMakeLists.txt)
+include(${CMAKE_CURRENT_LIST_DIR}/OpenImageIO.cmake)  # only in the librayvec_oiio.so module
 find_package(OpenEXR 3 REQUIRED CONFIG)
 find_package(PNG REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(glm REQUIRED)
 find_package(CLI11 REQUIRED)
-
-# Debian 12 trap: OpenImageIO's exported targets list /usr/include/opencv4, which exists only when
-# OpenCV is installed; CMake then refuses to configure. Drop include directories that do not exist.
-foreach(target OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)
-  if(TARGET ${target})
-    foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
-      get_target_property(dirs ${target} ${prop})
-      if(dirs)
-        set(kept "")
-        foreach(dir IN LISTS dirs)
-          if(dir MATCHES "^\\$<" OR EXISTS "${dir}")
-            list(APPEND kept "${dir}")
-          endif()
-        endforeach()
-        set_target_properties(${target} PROPERTIES ${prop} "${kept}")
-      endif()
-    endforeach()
-  endif()
-endforeach()
 
 # Embree 3 is optional: only `rayvec bench rays --vs-embree` uses it.
 set(RAYVEC_HAVE_EMBREE OFF)

@@ -1,0 +1,20 @@
+# OpenImageIO for the librayvec_oiio.so module, included by the main build and the fuzz project.
+# Debian 12 trap: OpenImageIO's exported targets list /usr/include/opencv4, which exists only when
+# OpenCV is installed; CMake then refuses to configure. Drop include directories that do not exist.
+find_package(OpenImageIO REQUIRED CONFIG)
+foreach(target OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)
+  if(TARGET ${target})
+    foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+      get_target_property(dirs ${target} ${prop})
+      if(dirs)
+        set(kept "")
+        foreach(dir IN LISTS dirs)
+          if(dir MATCHES "^\\$<" OR EXISTS "${dir}")
+            list(APPEND kept "${dir}")
+          endif()
+        endforeach()
+        set_target_properties(${target} PROPERTIES ${prop} "${kept}")
+      endif()
+    endforeach()
+  endif()
+endforeach()
