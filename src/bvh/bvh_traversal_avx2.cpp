@@ -14,7 +14,9 @@ constexpr Isa kThisIsa = Isa::avx2;
 
 #include "bvh/single_ray_traversal.inl"
 #include "kernels/moller_trumbore.inl"
+#include "kernels/watertight.inl"
 #include "bvh/packet_leaf.inl"
+#include "bvh/watertight_packet_leaf.inl"
 #include "bvh/packet_traversal.inl"
 
 namespace {

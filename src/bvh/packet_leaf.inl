@@ -39,6 +39,37 @@ struct MtTriangleBroadcast {
   RAYVEC_INLINE V operator()(const float* a) const { return V::broadcast(a[slot_offset(i)]); }
 };
 
+// The end of a packet leaf: the lanes in `found` have a nearest hit in the leaf, t, u, v and the
+// slot's bits in `slot`; each replaces its lane's previous hit (earlier leaves) when nearer (equal
+// t: lower id), as the single-ray kernels' final comparison does, and lowers that lane's limit and
+// initial. Returns the lanes whose hit changed.
+template <class V>
+RAYVEC_INLINE unsigned packet_leaf_finish(const TriangleArrays& T, unsigned found, V t_best, V u, V v, V slot,
+                                          float* limit, float* initial, Hit* hits) {
+  constexpr int P = V::W;
+  alignas(64) float ts[P], us[P], vs[P], ss[P];
+  t_best.store(ts);
+  u.store(us);
+  v.store(vs);
+  slot.store(ss);
+  unsigned changed = 0;
+  for (unsigned m = found; m != 0; m &= m - 1) {
+    const int k = __builtin_ctz(m);
+    const float t = ts[k];
+    const int32_t id = T.id[slot_offset(__builtin_bit_cast(uint32_t, ss[k]))];
+    Hit& hit = hits[k];
+    if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri))) {
+      hit = Hit{t, us[k], vs[k], id};
+      changed |= 1u << k;
+      if (t < limit[k]) {
+        limit[k] = t;
+        initial[k] = next_up(t);
+      }
+    }
+  }
+  return changed;
+}
+
 // Slots [begin, end) against the lanes set in `lanes`. Per lane k: limit[k] = min(tmax_k,
 // hits[k].t) and initial[k] = next_up(limit[k]) on entry (accepting t == limit, so a lower id at
 // the same t still wins); hits[k], limit[k] and initial[k] are updated where a lane finds a nearer
@@ -47,7 +78,6 @@ struct MtTriangleBroadcast {
 template <class V, bool TminZero>
 unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, const MtPacketRays<V>& q,
                            unsigned lanes, float* limit, float* initial, Hit* hits) {
-  constexpr int P = V::W;
   const typename V::Mask active = mask_from_bits(V{}, lanes);
   const V zero = V::broadcast(0.0f), widen = V::broadcast(kMtWiden);
   V best_t = V::load(initial);
@@ -93,25 +123,5 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   }
   if (found == 0) return 0;
   // u and v divided once, as mt_finish does (0 − un: no −0)
-  alignas(64) float ts[P], us[P], vs[P], ss[P];
-  best_t.store(ts);
-  ((zero - un) / adet).store(us);
-  (vn / adet).store(vs);
-  slot.store(ss);
-  unsigned changed = 0;
-  for (unsigned m = found; m != 0; m &= m - 1) {
-    const int k = __builtin_ctz(m);
-    const float t = ts[k];
-    const int32_t id = T.id[slot_offset(__builtin_bit_cast(uint32_t, ss[k]))];
-    Hit& hit = hits[k];
-    if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri))) {
-      hit = Hit{t, us[k], vs[k], id};
-      changed |= 1u << k;
-      if (t < limit[k]) {
-        limit[k] = t;
-        initial[k] = next_up(t);
-      }
-    }
-  }
-  return changed;
+  return packet_leaf_finish<V>(T, found, best_t, (zero - un) / adet, vn / adet, slot, limit, initial, hits);
 }

@@ -4,19 +4,19 @@
 // all active lanes at once; the children hit by any lane are visited front to back by the entry
 // distance of their lowest hit lane, and dropped on pop once every lane has a nearer hit than the
 // entry distance of their nearest lane. With the
-// float `mt` table of this ISA a leaf is intersected by the ray-packet kernel (packet_leaf.inl: one
-// triangle against all lanes per step, exactly the single-ray answer per lane); other intersectors,
-// and packets mixing tmin = 0 with tmin != 0, intersect a leaf ray by ray with the triangle kernel
-// table (closest_pair, two lanes per call, measured slower than one: packets 1.1x single rays
-// instead of 1.5x). When only kSingleRayLanes or fewer lanes remain active in a subtree, the packet
-// has diverged: those lanes finish that subtree by single-ray traversal (bvh_closest_from).
-// Uniform forward packets first test every child of a node against the hull of their lanes
-// (PacketChildren below) and then only the children it passes lane by lane.
-// Box tests: packets whose lanes all have tmin >= 0 (camera rays) take the forward test
-// (PK::Forward: one FMA a slab, the widening folded into the reciprocals as in the single-ray
-// forward test, and without per-lane blends when all lanes share the direction signs); the others
-// take the general test (PK::hits), as single_ray_traversal.inl's tmin < 0 rays do.
-// Included by the ISA units after single_ray_traversal.inl and packet_leaf.inl (kThisIsa, vfloat of P lanes).
+// float `mt` or `watertight` table of this ISA a leaf is intersected by a ray-packet kernel
+// (packet_leaf.inl, watertight_packet_leaf.inl: one triangle against all lanes per step, exactly the
+// single-ray answer per lane); other intersectors, and `mt` packets mixing tmin = 0 with tmin != 0,
+// intersect a leaf ray by ray with the triangle kernel table (closest_pair, two lanes per call, measured
+// slower than one: packets 1.1x single rays instead of 1.5x). When only kSingleRayLanes or fewer lanes remain
+// active in a subtree, the packet has diverged: those lanes finish that subtree by single-ray traversal
+// (bvh_closest_from). Uniform forward packets first test every child of a node against the hull of their
+// lanes (PacketChildren below) and then only the children it passes lane by lane. Box tests: packets whose
+// lanes all have tmin >= 0 (camera rays) take the forward test (PK::Forward: one FMA a slab, the widening
+// folded into the reciprocals as in the single-ray forward test, and without per-lane blends when all lanes
+// share the direction signs); the others take the general test (PK::hits), as single_ray_traversal.inl's tmin
+// < 0 rays do. Included by the ISA units after single_ray_traversal.inl, packet_leaf.inl and
+// watertight_packet_leaf.inl (kThisIsa, vfloat of P lanes).
 
 inline constexpr int kSingleRayLanes = 2;
 
@@ -59,12 +59,22 @@ struct PacketBoxes {
   RAYVEC_INLINE float max_tmax(unsigned lanes) const { return pk.max_tmax(lanes); }
 };
 
-// The per-packet state of the traversal: per-lane limits (see mt_packet_closest) and the leaf mode.
+// The leaf kernel of a packet (bvh_closest_packet chooses it once per packet).
+enum class PacketLeaf {
+  ray_by_ray,    // the table's single-ray kernel, lane by lane
+  mt_tmin_zero,  // mt_packet_closest, every tmin = 0
+  mt,            // mt_packet_closest, no tmin = 0
+  watertight,    // watertight_packet_closest
+};
+
+// The per-packet state of the traversal: per-lane limits (see mt_packet_closest) and the leaf kernel
+// with its rays (q for the mt kernels, wq for watertight).
 struct PacketRun {
   float* tmax;     // min(tmax, hit.t) per lane
   float* initial;  // next_up(tmax) per lane
-  int leaf_mode;   // 0 ray by ray, 1 packet kernel with every tmin = 0, 2 packet kernel, no tmin = 0
+  PacketLeaf leaf;
   const MtPacketRays<vfloat>& q;
+  const WatertightPacketRays<vfloat>& wq;
 };
 
 RAYVEC_INLINE float vmax_abs(float a, float b) {
@@ -126,7 +136,7 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
   const WideNode<N>* nodes = static_cast<const WideNode<N>*>(bvh.nodes);
   float* const tmax = run.tmax;
   float* const initial = run.initial;
-  const int leaf_mode = run.leaf_mode;
+  const PacketLeaf leaf = run.leaf;
   const MtPacketRays<vfloat>& q = run.q;
   PacketItem local[kLocalStack];
   PacketItem* stack = bvh.stack_size <= kLocalStack
@@ -187,10 +197,12 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
       }
     } else if (ref != kEmptyRef) {
       const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
-      if (leaf_mode == 1) {
+      if (leaf == PacketLeaf::mt_tmin_zero) {
         mt_packet_closest<vfloat, true>(tris, begin, end, q, lanes, tmax, initial, hits);
-      } else if (leaf_mode == 2) {
+      } else if (leaf == PacketLeaf::mt) {
         mt_packet_closest<vfloat, false>(tris, begin, end, q, lanes, tmax, initial, hits);
+      } else if (leaf == PacketLeaf::watertight) {
+        watertight_packet_closest<vfloat>(tris, begin, end, run.wq, lanes, tmax, initial, hits);
       } else {
         for (unsigned m = lanes; m != 0; m &= m - 1) {
           const int k = __builtin_ctz(m);
@@ -265,24 +277,35 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const 
     if (active == 0) return;
   }
 
-  // The leaf kernel: 0 ray by ray, 1 packet kernel with every tmin = 0, 2 packet kernel, no tmin = 0.
-  int leaf_mode = 0;
-  if (kernels.intersector == Intersector::mt && kernels.isa == kThisIsa) {
-    if ((tmin_zero & active) == active)
-      leaf_mode = 1;
-    else if ((tmin_zero & active) == 0)
-      leaf_mode = 2;
+  // The leaf kernel: a packet kernel for this unit's float `mt` and `watertight` tables (the mt one
+  // only when the lanes do not mix tmin = 0 with tmin != 0), else ray by ray.
+  PacketLeaf leaf = PacketLeaf::ray_by_ray;
+  if (kernels.isa == kThisIsa) {
+    if (kernels.intersector == Intersector::mt) {
+      if ((tmin_zero & active) == active)
+        leaf = PacketLeaf::mt_tmin_zero;
+      else if ((tmin_zero & active) == 0)
+        leaf = PacketLeaf::mt;
+    } else if (kernels.intersector == Intersector::watertight) {
+      leaf = PacketLeaf::watertight;
+    }
   }
   alignas(64) float initial[P], lo[P];
   for (int k = 0; k < P; ++k) {
     initial[k] = next_up(tmax[k]);
-    lo[k] = leaf_mode == 2 ? mt_lower(soa[6][k]) : 0.0f;
+    lo[k] = leaf == PacketLeaf::mt ? mt_lower(soa[6][k]) : 0.0f;
   }
   const MtPacketRays<vfloat> q{
       {vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2]), dx, dy, dz, vfloat::load(soa[6])},
       vfloat::load(lo)};
+  WatertightPacketRays<vfloat> wq;  // set only for the watertight leaf
+  if (leaf == PacketLeaf::watertight) {
+    const float* const o[3] = {soa[0], soa[1], soa[2]};
+    const float* const d[3] = {soa[3], soa[4], soa[5]};
+    wq = watertight_packet_rays<vfloat>(o, d, soa[6], active);
+  }
 
-  const PacketRun run{tmax, initial, leaf_mode, q};
+  const PacketRun run{tmax, initial, leaf, q, wq};
   // The forward test (PK::Forward) when every lane has tmin >= 0 and no slab product can overflow:
   // |1/d| · max(|o|, |root box|) <= 2^120 on every axis of every lane (so also no infinite 1/d of a
   // zero direction component, whose 0·inf the FMA form could not skip), and eps >= 2^-20.

@@ -117,8 +117,9 @@ RAYVEC_INLINE bool same_product(double a, double b, double c, double d) {
 
 // True when triangle j has exactly zero area (e1 × e2 = 0 for the exact vertices). Needed because
 // shearing rounds a collinear triangle into a sliver of nonzero area in ray space. The differences
-// of floats are exact in double unless the coordinates' exponents differ by more than 29.
-RAYVEC_COLD bool zero_area(const TriangleArrays& T, uint32_t j) {
+// of floats are exact in double unless the coordinates' exponents differ by more than 29. Inline (and
+// cold): the BVH units include this file too, for the packet leaf (bvh/watertight_packet_leaf.inl).
+inline RAYVEC_COLD bool zero_area(const TriangleArrays& T, uint32_t j) {
   const uint32_t k = slot_offset(j);
   const double e1x = double(T.v1x[k]) - T.v0x[k], e1y = double(T.v1y[k]) - T.v0y[k],
                e1z = double(T.v1z[k]) - T.v0z[k];
@@ -153,23 +154,52 @@ RAYVEC_INLINE V watertight_t_error(V ax, V ay, V az, V bx, V by, V bz, V cx, V c
   return V::broadcast(S(7)) * gamma(3) * max_z + V::broadcast(S(5)) * delta_e * spread_z / adet;
 }
 
-// The lanes of triangles [i, i + W) that the ray hits with tmin <= t < tlimit and t beyond its
-// rounding error (watertight_t_error).
+// The triangles' vertex rows of one step as lanes: W consecutive slots loaded from slot i (one ray,
+// W triangles), or one slot broadcast (bvh/watertight_packet_leaf.inl: W rays, one triangle).
 template <class V>
-RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const WatertightRay<V>& r, uint32_t i,
-                                          typename V::Mask active, V tlimit) {
+struct WatertightRows {
+  uint32_t k;  // slot_offset of the step's first slot
+  RAYVEC_INLINE V operator()(const float* row) const { return V::load(row + k); }
+};
+
+// The lanes of `m` whose triangle (slot i + lane) has nonzero area.
+template <class V>
+struct NonzeroAreaLanes {
+  const TriangleArrays& T;
+  uint32_t i;
+  RAYVEC_INLINE typename V::Mask operator()(typename V::Mask m) const {
+    float keep[V::W];
+    unsigned dropped = 0;
+    for (int k = 0; k < V::W; ++k) keep[k] = 1.0f;
+    for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1) {
+      const int k = __builtin_ctz(lanes);
+      if (zero_area(T, i + unsigned(k))) {
+        keep[k] = 0.0f;
+        dropped = 1;
+      }
+    }
+    return dropped ? m & (V::load(keep) > V::broadcast(typename V::Scalar(0))) : m;
+  }
+};
+
+// The lanes that hit with tmin <= t < tlimit and t beyond its rounding error (watertight_t_error):
+// lane k tests the ray of lane k of `r` against the triangle whose vertices `at` gives in lane k, and
+// `nonzero_area` keeps the lanes of a mask whose triangle has nonzero area. The one body of the
+// single-ray kernel (below) and the packet leaf, so both give the same bits lane for lane.
+template <class V, class At, class NonzeroArea>
+RAYVEC_INLINE LaneHits<V> watertight_lanes(const WatertightRay<V>& r, At at, NonzeroArea nonzero_area,
+                                           typename V::Mask active, V tlimit) {
   using S = typename V::Scalar;
   LaneHits<V> out;
-  const uint32_t k = slot_offset(i);  // the step's lanes in each row (blocked rows)
   // translate to the ray origin (exact vertices), z stays unsheared until needed
-  const V az = V::load(r.az + k) - r.oz, bz = V::load(r.bz + k) - r.oz, cz = V::load(r.cz + k) - r.oz;
+  const V az = at(r.az) - r.oz, bz = at(r.bz) - r.oz, cz = at(r.cz) - r.oz;
   // shear into ray space (separate multiply and subtract: the same rounding on every ISA)
-  const V ax = (V::load(r.ax + k) - r.ox) - mul_rounded(r.sx, az);
-  const V ay = (V::load(r.ay + k) - r.oy) - mul_rounded(r.sy, az);
-  const V bx = (V::load(r.bx + k) - r.ox) - mul_rounded(r.sx, bz);
-  const V by = (V::load(r.by + k) - r.oy) - mul_rounded(r.sy, bz);
-  const V cx = (V::load(r.cx + k) - r.ox) - mul_rounded(r.sx, cz);
-  const V cy = (V::load(r.cy + k) - r.oy) - mul_rounded(r.sy, cz);
+  const V ax = (at(r.ax) - r.ox) - mul_rounded(r.sx, az);
+  const V ay = (at(r.ay) - r.oy) - mul_rounded(r.sy, az);
+  const V bx = (at(r.bx) - r.ox) - mul_rounded(r.sx, bz);
+  const V by = (at(r.by) - r.oy) - mul_rounded(r.sy, bz);
+  const V cx = (at(r.cx) - r.ox) - mul_rounded(r.sx, cz);
+  const V cy = (at(r.cy) - r.oy) - mul_rounded(r.sy, cz);
   // 2D edge functions (no FMA: a shared edge must give the exact negation in the neighbour)
   V u = mul_rounded(cx, by) - mul_rounded(cy, bx);
   V v = mul_rounded(ax, cy) - mul_rounded(ay, cx);
@@ -207,25 +237,21 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
   if constexpr (sizeof(S) == 4)
     if (any(out.mask))
       out.mask = out.mask & (out.t > watertight_t_error(ax, ay, az, bx, by, bz, cx, cy, cz, r.sz, adet));
-  if (any(out.mask)) {
-    // zero-area triangles never hit (checked only for the rare lanes that would hit)
-    float keep[V::W];
-    unsigned dropped = 0;
-    for (int k = 0; k < V::W; ++k) keep[k] = 1.0f;
-    for (unsigned lanes = bits(out.mask); lanes != 0; lanes &= lanes - 1) {
-      const int k = __builtin_ctz(lanes);
-      if (zero_area(T, i + unsigned(k))) {
-        keep[k] = 0.0f;
-        dropped = 1;
-      }
-    }
-    if (dropped) out.mask = out.mask & (V::load(keep) > zero);
-  }
+  // zero-area triangles never hit (checked only for the rare lanes that would hit)
+  if (any(out.mask)) out.mask = nonzero_area(out.mask);
   if (any(out.mask)) {  // barycentrics of v1 and v2: V and W weight them
     out.u = xor_bits(v, sign) / adet;
     out.v = xor_bits(w, sign) / adet;
   }
   return out;
+}
+
+// The lanes of triangles [i, i + W) that the ray hits with tmin <= t < tlimit and t beyond its
+// rounding error (watertight_t_error).
+template <class V>
+RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const WatertightRay<V>& r, uint32_t i,
+                                          typename V::Mask active, V tlimit) {
+  return watertight_lanes<V>(r, WatertightRows<V>{slot_offset(i)}, NonzeroAreaLanes<V>{T, i}, active, tlimit);
 }
 
 template <class V>
