@@ -20,10 +20,11 @@
 // exact stage alone decides — outside subnormal |det|, where no pre-test product is accurate to
 // 2^-20 and the two layouts may disagree about a hit that far from normal range.
 //
-// Only `mt` in float has this kernel; paper, mt64, watertight and watertight64 packets keep the
-// per-lane fallback (the single-ray kernel per active lane), as does a packet whose lanes mix
-// tmin = 0 with tmin != 0 (the single-ray kernel's tmin = 0 pre-test differs from the general one
-// for an overflowing |det|, so each kind has its own packet variant and mixing them is left out).
+// Float `mt` has this kernel and float `watertight` its own (watertight_packet_leaf.inl); paper, mt64
+// and watertight64 packets keep the per-lane fallback (the single-ray kernel per active lane), as does
+// an `mt` packet whose lanes mix tmin = 0 with tmin != 0 (the single-ray kernel's tmin = 0 pre-test differs
+// from the general one for an overflowing |det|, so each kind has its own packet variant and mixing them is
+// left out).
 
 // The packet's rays as lanes, and per lane the pre-test's lower factor mt_lower(tmin).
 template <class V>

@@ -34,7 +34,9 @@ enum class Intersector {
 
   // The `mt` contract evaluated in double: float vertices converted exactly, edges computed in double
   // from the vertices (not from float-rounded edges), t rounded to float at the end. About 2^29 times
-  // less rounding than `mt`; same NaN and degenerate guarantees; still not watertight.
+  // less rounding than `mt`; same NaN and degenerate guarantees; still not watertight. BVH ray packets
+  // intersect leaves lane by lane with the single-ray kernel (no packet leaf: a double step holds
+  // half the lanes, and no command defaults to it).
   mt64,
 
   // Watertight ray/triangle intersection (Woop, Benthin & Wald 2013) in float, from the exact input
@@ -49,12 +51,14 @@ enum class Intersector {
   // conservative t): a ray leaving a surface from an offset origin never finds it again;
   // degenerate (zero-area) triangles and rays parallel to the plane have det = 0 and never hit.
   // A NaN or Inf in the ray's origin, direction, tmin or tmax, or in a vertex, never yields a hit
-  // or a NaN output. No FMA: the same ids and t on every ISA.
+  // or a NaN output. No FMA: the same ids and t on every ISA. BVH ray packets run a packet leaf
+  // (bvh/watertight_packet_leaf.inl) with the single-ray kernel's results bit for bit.
   watertight,
 
   // The `watertight` contract evaluated in double (no double fallback needed for zero edge
   // functions: they are taken as on-edge, which keeps watertightness); t rounded to float at the
-  // end. Same NaN/degenerate guarantees; same results on every ISA.
+  // end. Same NaN/degenerate guarantees; same results on every ISA. BVH ray packets intersect leaves
+  // lane by lane with the single-ray kernel, as for mt64.
   watertight64,
 };
 

@@ -1,8 +1,9 @@
 // Ray packets (BvhAccelerator::closest_stream) must give every lane exactly its single-ray answer and brute
 // force's: same triangle id and bit-identical t, u, v (ties to the lowest id). With the float `mt`
-// table the leaves of AVX2/AVX-512 packets go through the ray-packet kernel (bvh/packet_leaf.inl,
-// one triangle against all lanes per step); packets whose lanes mix tmin = 0 and tmin != 0, and
-// the other intersectors, take the per-lane fallback, tested here too. Every ISA this CPU has; the
+// and `watertight` tables the leaves of AVX2/AVX-512 packets go through a ray-packet kernel
+// (bvh/packet_leaf.inl, bvh/watertight_packet_leaf.inl: one triangle against all lanes per step);
+// `mt` packets whose lanes mix tmin = 0 and tmin != 0, and `paper`, take the per-lane fallback,
+// tested here too (more watertight cases: bvh_watertight_packet_test.cpp). Every ISA this CPU has; the
 // others are skipped and named (scalar has no packets: its stream is single rays).
 #include <gtest/gtest.h>
 
