@@ -1,0 +1,95 @@
+#include "render/tile_renderer.h"
+
+#include <chrono>
+
+#include "platform/stopwatch.h"
+#include "render/renderer.h"
+#include "render/surface_point.h"
+
+namespace rayvec {
+
+std::vector<std::string> render_channel_names(const RenderSettings::Aovs& aov) {
+  std::vector<std::string> names{"R", "G", "B"};
+  if (aov.depth) names.push_back("Z");
+  if (aov.normal) names.insert(names.end(), {"N.x", "N.y", "N.z"});
+  if (aov.id) names.insert(names.end(), {"id", "object_id"});
+  if (aov.cost) names.insert(names.end(), {"cost.nodes", "cost.triangles"});
+  if (aov.bounces) names.push_back("bounces");
+  return names;
+}
+
+TileRenderer::TileRenderer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+                           const CameraRays& camera)
+    : scene_(scene),
+      accel_(accel),
+      settings_(settings),
+      camera_(camera),
+      channels_(static_cast<int>(render_channel_names(settings.aov).size())),
+      counting_(settings.aov.cost || settings.aov.bounces),
+      pixel_cost_(accel),
+      whitted_(scene, accel, settings, counting_ ? &pixel_cost_ : nullptr) {}
+
+void TileRenderer::render(const TileRect& rect, float* out) {
+  const int w = rect.width(), n = rect.pixels(), spp = std::max(1, settings_.spp);
+  sum_.assign(n, Vec3f{});
+  if (counting_) {
+    costs_.assign(n, TraversalCost{});
+    bounces_.assign(n, 0);
+  }
+  for (int s = 0; s < spp; ++s) {
+    const auto ta = std::chrono::steady_clock::now();
+    batch_.resize(n);
+    hits_.resize(n);
+    for (int i = 0; i < n; ++i) {
+      const int x = rect.x0 + i % w, y = rect.y0 + i / w;
+      const auto [sx, sy] = sample_position(x, y, s, spp);
+      batch_[i] = camera_.ray(float(x) + sx, float(y) + sy);
+    }
+    accel_.closest_stream(batch_.data(), hits_.data(), n);
+    rays.primary += uint64_t(n);
+    const auto tb = std::chrono::steady_clock::now();
+    primary_seconds += std::chrono::duration<double>(tb - ta).count();
+    for (int i = 0; i < n; ++i) {
+      if (counting_) pixel_cost_.reset();
+      sum_[i] += whitted_.shade(batch_[i], hits_[i], 0, 1.0f, rays);
+      if (counting_) {
+        costs_[i] += pixel_cost_.cost;
+        bounces_[i] = std::max(bounces_[i], pixel_cost_.bounces);
+      }
+      if (s != 0 || channels_ == 3) continue;
+      // AOVs from the first sample.
+      float* px = out + std::size_t(i) * channels_ + 3;
+      const Hit& h = hits_[i];
+      SurfacePoint sp;
+      if (h.hit()) sp = surface_point(scene_, batch_[i], h);
+      if (settings_.aov.depth) *px++ = h.hit() ? h.t * dot(batch_[i].dir, camera_.forward()) : kInf;
+      if (settings_.aov.normal) {
+        const Vec3f nrm = h.hit() ? sp.ns : Vec3f{};
+        *px++ = nrm.x;
+        *px++ = nrm.y;
+        *px++ = nrm.z;
+      }
+      if (settings_.aov.id) {
+        *px++ = float(h.tri);
+        *px++ = h.hit() ? float(scene_.triangle_object[h.tri]) : -1.0f;
+      }
+    }
+    shading_seconds += seconds_since(tb);
+  }
+  for (int i = 0; i < n; ++i) {
+    const Vec3f c = sum_[i] * (1.0f / float(spp));
+    float* px = out + std::size_t(i) * channels_;
+    px[0] = c.x;
+    px[1] = c.y;
+    px[2] = c.z;
+    if (!counting_) continue;
+    px += channels_ - (settings_.aov.cost ? 2 : 0) - (settings_.aov.bounces ? 1 : 0);
+    if (settings_.aov.cost) {
+      *px++ = float(costs_[i].nodes);
+      *px++ = float(costs_[i].triangles);
+    }
+    if (settings_.aov.bounces) *px = float(bounces_[i]);
+  }
+}
+
+}  // namespace rayvec
