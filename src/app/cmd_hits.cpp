@@ -10,6 +10,7 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/trace_options.h"
+#include "distributed/rays_across_ranks.h"
 #include "io/hits_csv.h"
 #include "io/output_sink.h"
 #include "io/rays_csv.h"
@@ -30,8 +31,10 @@ int run_hits(const HitsArgs& args) {
   const AccelKind kind = resolve_accel(args.trace);
   const ObjModel model = load_obj(args.mesh);
   for (const std::string& w : model.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  const RayBatch rays = read_rays_csv(args.rays);
-  OutputSink out(args.output);  // opened before tracing: an unwritable path fails fast
+  // Under mpirun rank 0 reads the rays and writes the answers (its share of the rays goes to each rank).
+  const bool root = cluster().root();
+  const RayBatch rays = root ? read_rays_csv(args.rays) : RayBatch{};
+  OutputSink out(root ? args.output : "");  // opened before tracing: an unwritable path fails fast
 
   const auto accel = make_accelerator(kind, model.mesh, config);
   const auto start = std::chrono::steady_clock::now();
@@ -39,15 +42,15 @@ int run_hits(const HitsArgs& args) {
   std::size_t hit_count = 0;
   std::vector<Hit> hits;
   std::vector<uint8_t> occluded;
+  RankLoads loads;
   if (args.any) {
-    occluded.resize(rays.size());
-    trace_occluded(*accel, rays, occluded);
+    trace_occluded_across_ranks(cluster(), *accel, rays, occluded, loads);
     for (uint8_t o : occluded) hit_count += o;
   } else {
-    hits.resize(rays.size());
-    trace_closest(*accel, rays, hits);
+    trace_closest_across_ranks(cluster(), *accel, rays, hits, loads);
     for (const Hit& h : hits) hit_count += h.hit();
   }
+  if (!root) return 0;
   const double seconds = seconds_since(start);
   const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
 
@@ -62,6 +65,7 @@ int run_hits(const HitsArgs& args) {
                rays.size(), model.mesh.size(), hit_count, args.any ? "occluded" : "hits", seconds,
                cpu_seconds, seconds > 0 ? rays.size() / seconds * 1e-6 : 0.0, accel_name(kind),
                isa_name(config.isa), intersector_name(config.intersector), omp_get_max_threads());
+  if (cluster().distributed()) std::fprintf(stderr, "hits: %s", loads.text().c_str());
   return 0;
 }
 

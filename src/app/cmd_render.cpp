@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "app/scene_overrides.h"
 #include "app/trace_options.h"
+#include "distributed/render_across_ranks.h"
 #include "image/image_io.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
@@ -84,15 +85,15 @@ int run_render(RenderArgs& a) {
   if (!is_writable_image_path(a.output))
     throw InputError("-o: unknown image extension in '" + a.output + "' (use .png or .exr)");
   // Fail before the work, not after it: an unwritable -o is found by opening (and dropping) the
-  // temporary the image will later be written through (AtomicFile::check).
-  AtomicFile::check(a.output);
+  // temporary the image will later be written through (AtomicFile::check). Rank 0 writes.
+  if (cluster().root()) AtomicFile::check(a.output);
   if (!a.stats_json.empty()) {
     std::error_code e1, e2;
     if (std::filesystem::weakly_canonical(a.stats_json, e1) ==
             std::filesystem::weakly_canonical(a.output, e2) &&
         !e1 && !e2)
       throw InputError("--stats-json: " + a.stats_json + " is the image -o writes (give another file name)");
-    AtomicFile::check(a.stats_json);
+    if (cluster().root()) AtomicFile::check(a.stats_json);
   }
   const RenderSettings::Aovs aov = parse_aovs(a.aov, a.output);
   if (a.heatmap && !aov.cost && !aov.bounces)
@@ -140,8 +141,10 @@ int run_render(RenderArgs& a) {
   }
 
   ProgressBar bar(!a.quiet);
-  const Image image = render(scene, *accel, settings, stats, bar.progress());
-  bar.finish();  // render() has drawn it at 100 %
+  RankLoads loads;
+  const Image image = render_across_ranks(cluster(), scene, *accel, settings, stats, loads, bar.progress());
+  bar.finish();                     // render() has drawn it at 100 %
+  if (!cluster().root()) return 0;  // rank 0 has the image
   if (non_background_pixels(image, scene.background) == 0)
     std::fprintf(stderr,
                  "warning: %s: the image shows only the background: the camera sees no geometry "
@@ -156,6 +159,7 @@ int run_render(RenderArgs& a) {
   stats.write_seconds = seconds_since(t);
   if (!a.quiet) std::printf("wrote %s (%.3f s)\n", a.output.c_str(), stats.render_seconds);
   if (a.stats) std::printf("intersector: %s\n%s", intersector_name(config.intersector), stats.text().c_str());
+  if (a.stats && cluster().distributed()) std::printf("%s", loads.text().c_str());
   if (a.heatmap) write_heatmaps(a, image, a.quiet);
   if (!a.stats_json.empty()) {
     AtomicFile file(a.stats_json);

@@ -13,6 +13,7 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/trace_options.h"
+#include "distributed/rays_across_ranks.h"
 #include "geometry/coordinate_range.h"
 #include "io/input_error.h"
 #include "io/output_sink.h"
@@ -55,9 +56,13 @@ int run_visibility(const VisibilityArgs& args) {
   const AccelKind kind = resolve_accel(args.trace);
   if (args.verts == "-" && args.faces == "-")
     throw InputError("--verts and --faces cannot both read standard input (give one of them as a file)");
-  const std::vector<Vec3f> verts = read_verts_csv(args.verts);
-  const auto faces = read_faces_csv(args.faces, verts.size());
-  OutputSink out(args.output);
+  // Under mpirun rank 0 reads the inputs (standard input reaches it alone) and shares them.
+  const bool root = cluster().root();
+  std::vector<Vec3f> verts = root ? read_verts_csv(args.verts) : std::vector<Vec3f>{};
+  auto faces = root ? read_faces_csv(args.faces, verts.size()) : std::vector<std::array<uint32_t, 3>>{};
+  OutputSink out(root ? args.output : "");
+  cluster().broadcast(verts);
+  cluster().broadcast(faces);
 
   const VisibilityMesh scene = build_visibility_mesh(verts, faces);
   if (scene.dropped)
@@ -67,7 +72,10 @@ int run_visibility(const VisibilityArgs& args) {
   const auto accel = make_accelerator(kind, scene.mesh, config);
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();  // CPU time too: wall time inflates on a shared machine
-  const std::vector<Visibility> result = compute_visibility(*accel, scene.mesh, verts, origin);
+  RankLoads loads;
+  const std::vector<Visibility> result =
+      visibility_across_ranks(cluster(), *accel, scene.mesh, verts, origin, loads);
+  if (!root) return 0;
   const double seconds = seconds_since(start);
   const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
 
@@ -88,6 +96,7 @@ int run_visibility(const VisibilityArgs& args) {
       result.size(), visible, result.size() - visible - undefined, undefined, scene.mesh.size(), seconds,
       cpu_seconds, accel_name(kind), isa_name(config.isa), intersector_name(config.intersector),
       omp_get_max_threads());
+  if (cluster().distributed()) std::fprintf(stderr, "visibility: %s", loads.text().c_str());
   return 0;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "io/error_report.h"
 #include "io/input_error.h"
 
 namespace rayvec {
@@ -111,19 +112,21 @@ int CommandLine::main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "rayvec: " << e.what() << "\n(run `rayvec --help` or `rayvec COMMAND --help`)\n";
+    report_error(std::string("rayvec: ") + e.what() + "\n(run `rayvec --help` or `rayvec COMMAND --help`)");
     return 2;
+  } catch (const ReportedFailure& f) {
+    return f.status;
   } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
+    report_error(e.what());
     return 2;
   } catch (const RuntimeError& e) {
-    std::cerr << "rayvec: " << e.what() << "\n";
+    report_error(std::string("rayvec: ") + e.what());
     return 1;
   } catch (const std::bad_alloc&) {
-    std::cerr << "rayvec: out of memory\n";
+    report_error("rayvec: out of memory");
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "rayvec: error: " << e.what() << "\n";
+    report_error(std::string("rayvec: error: ") + e.what());
     return 1;
   }
 }

@@ -9,7 +9,9 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "distributed/cluster.h"
 #include "io/atomic_file.h"
+#include "io/error_report.h"
 
 namespace {
 
@@ -33,7 +35,17 @@ void install_signal_handlers() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Under mpirun or srun: MPI starts here (and only then, distributed/launcher.h); after it, so
+  // that the handlers are ours.
+  rayvec::Cluster& cluster = rayvec::cluster();
+  if (const int status = cluster.start(); status != 0) return status;
   install_signal_handlers();
+  if (cluster.distributed() && !rayvec::runs_across_ranks(argc, argv)) {
+    rayvec::report_error(
+        "rayvec: this command does not run across ranks (render, hits, visibility and bench "
+        "paper do): run it without mpirun/srun");
+    return cluster.finish(2);
+  }
   rayvec::CommandLine cli("rayvec",
                           "rayvec: a SoA/SIMD Möller–Trumbore ray tracer.\n"
                           "Run `rayvec COMMAND --help` for each command's options and examples.");
@@ -58,5 +70,5 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "rayvec: cannot write standard output: %s\n", std::strerror(errno ? errno : EIO));
     status = 1;
   }
-  return status;
+  return cluster.finish(status);
 }

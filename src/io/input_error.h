@@ -1,6 +1,7 @@
 // The two kinds of failure every command reports (see docs: exit statuses).
 //   InputError   — the user's input or usage is wrong: exit status 2. Message: `file:line: what is wrong`.
 //   RuntimeError — the input was fine but the work failed (I/O, resources): exit status 1.
+//   ReportedFailure — either of them, already reported by another rank of a distributed run.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,12 @@ struct InputError : std::runtime_error {
 
 struct RuntimeError : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// A failure whose message another process has printed (a distributed run prints one rank's message
+// for all): the command ends with `status` and prints nothing.
+struct ReportedFailure {
+  int status;
 };
 
 }  // namespace rayvec

@@ -23,7 +23,8 @@ declare -A allowed=(
   [render]="$core io image scene shaders render"
   [bench]="$core io bench"
   [accuracy]="$core io bench accuracy"
-  [app]="$core io image scene shaders render bench accuracy app"
+  [distributed]="$core io image scene shaders render distributed"
+  [app]="$core io image scene shaders render bench accuracy distributed app"
 )
 status=0
 checked=0
