@@ -43,8 +43,7 @@ bool runs_across_ranks(int argc, char** argv) {
   }
   if (words.empty()) return true;
   const std::string& w = words[0];
-  return w == "render" || w == "hits" || w == "visibility" ||
-         (w == "bench" && (words.size() < 2 || words[1] == "paper"));
+  return w == "render" || w == "hits" || w == "visibility";
 }
 
 int Cluster::start() {
@@ -119,6 +118,7 @@ void Cluster::abort_job(int status) {
         last_error_message());
   say("rayvec: rank " + std::to_string(rank_) + " of " + std::to_string(size_) + " failed (exit status " +
       std::to_string(status) + "); stopping every rank");
+  if (!root()) ::dup2(terminal_fd_, 2);  // MPI_Abort's own notice needs a stderr
   mpi().abort(status);
   std::_Exit(status);
 }
