@@ -113,9 +113,10 @@ void Cluster::begin_collective() {
 }
 
 void Cluster::abort_job(int status) {
-  if (!root() && !last_error_message().empty())
-    say("rayvec: rank " + std::to_string(rank_) + " of " + std::to_string(size_) + ": " +
-        last_error_message());
+  std::string message = last_error_message();
+  if (message.rfind("rayvec: ", 0) == 0) message.erase(0, 8);
+  if (!root() && !message.empty())
+    say("rayvec: rank " + std::to_string(rank_) + " of " + std::to_string(size_) + ": " + message);
   say("rayvec: rank " + std::to_string(rank_) + " of " + std::to_string(size_) + " failed (exit status " +
       std::to_string(status) + "); stopping every rank");
   if (!root()) ::dup2(terminal_fd_, 2);  // MPI_Abort's own notice needs a stderr
