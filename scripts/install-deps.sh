@@ -2,7 +2,8 @@
 # Installs rayvec's build and test dependencies from Debian 12 packages (apt-get; sudo when not root).
 # Skips apt entirely when everything is already installed. Embree is optional (benchmark rival only):
 # pass --with-embree to install it too. --with-fuzz adds clang-14 and its libFuzzer runtime
-# (scripts/fuzz.sh, tests/fuzz/); the normal build and test path does not need them.
+# (scripts/fuzz.sh, tests/fuzz/); the normal build and test path does not need them. --with-mpi adds
+# OpenMPI (scripts/test_mpi.sh, docs/distributed.md).
 set -euo pipefail
 packages=(build-essential cmake pkg-config
           libtinyobjloader-dev libfast-float-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
@@ -13,6 +14,7 @@ for flag in "$@"; do
   case "$flag" in
     --with-embree) packages+=(libembree-dev) ;;
     --with-fuzz) packages+=(clang-14 libclang-rt-14-dev) ;;
+    --with-mpi) packages+=(openmpi-bin libopenmpi-dev) ;;
   esac
 done
 
