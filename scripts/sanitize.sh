@@ -12,7 +12,7 @@ flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-fr
 # -g1: line tables only, enough for file:line in every report, and a third less compile time than -g
 # (CI's budget: docs/reliability.md)
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DRAYVEC_MPI=OFF >/dev/null
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DRAYVEC_CUDA=OFF -DRAYVEC_MPI=OFF >/dev/null
 cmake --build "$build" -j "$(nproc)"
 
 # halt_on_error: the first report fails the test; leaks fail it too (suppressions, if ever needed

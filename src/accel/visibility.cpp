@@ -40,11 +40,13 @@ VisibilityMesh build_visibility_mesh(const std::vector<Vec3f>& verts,
   return out;
 }
 
+Ray visibility_ray(Vec3f origin, Vec3f vertex) {
+  // Open segment: t = 0 (the origin) and t = 1 (the vertex) excluded, everything between included.
+  return Ray{origin, vertex - origin, std::numeric_limits<float>::denorm_min(), std::nextafter(1.0f, 0.0f)};
+}
+
 std::vector<Visibility> compute_visibility(const Accelerator& accel, const TriangleMesh& mesh,
                                            const std::vector<Vec3f>& verts, Vec3f origin) {
-  // Open segment: t = 0 (the origin) and t = 1 (the vertex) excluded, everything between included.
-  const float t_open_start = std::numeric_limits<float>::denorm_min();
-  const float t_open_end = std::nextafter(1.0f, 0.0f);
   // One segment (ray and filter) per finite vertex, all traced as one batch.
   std::vector<std::size_t> row;
   std::vector<OwnVertex> own;
@@ -56,7 +58,7 @@ std::vector<Visibility> compute_visibility(const Accelerator& accel, const Trian
     if (!is_finite(verts[i])) continue;
     row.push_back(i);
     own.push_back(OwnVertex{&mesh, verts[i]});
-    rays.push_back(Ray{origin, verts[i] - origin, t_open_start, t_open_end});
+    rays.push_back(visibility_ray(origin, verts[i]));
   }
   std::vector<HitFilter> filters(own.size());
   for (std::size_t k = 0; k < own.size(); ++k) filters[k] = HitFilter{&touches_vertex, &own[k]};

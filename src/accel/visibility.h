@@ -29,6 +29,10 @@ struct VisibilityMesh {
 VisibilityMesh build_visibility_mesh(const std::vector<Vec3f>& verts,
                                      const std::vector<std::array<uint32_t, 3>>& faces);
 
+// The segment origin -> vertex as a ray: origin + t·(vertex − origin) for t in [smallest positive
+// float, largest float below 1] (open at both ends).
+Ray visibility_ray(Vec3f origin, Vec3f vertex);
+
 // Per vertex: the answer for the segment origin -> verts[i], traced as the ray
 // origin + t·(verts[i] − origin) with t in [smallest positive float, largest float below 1], and
 // triangles with a corner exactly at verts[i] ignored (this covers duplicated vertex positions).

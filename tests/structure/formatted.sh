@@ -11,10 +11,10 @@ if [[ -z "$format" ]]; then
   exit 77
 fi
 cd "$root"
-mapfile -t files < <(find src shaders tests -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.inl' \) | sort)
+mapfile -t files < <(find src shaders tests -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.inl' -o -name '*.cu' -o -name '*.cuh' \) | sort)
 if ((${#files[@]} == 0)); then echo "FAIL: no sources found under $root"; exit 1; fi
 if ! "$format" --dry-run --Werror "${files[@]}"; then
-  echo "FAIL: run: clang-format -i \$(git ls-files 'src/*' 'shaders/*' 'tests/*' | grep -E '\\.(h|cpp|inl)\$')"
+  echo "FAIL: run: clang-format -i \$(git ls-files 'src/*' 'shaders/*' 'tests/*' | grep -E '\\.(h|cpp|inl|cu|cuh)\$')"
   exit 1
 fi
 echo "checked ${#files[@]} files with $("$format" --version)"

@@ -2,7 +2,8 @@
 # Checks the layering of docs/architecture.md on the sources: each folder of src/ (and shaders/)
 # includes project headers only from the folders its layer may see, so the core (math, geometry,
 # rays, simd, platform, kernels, bvh, accel) never reaches up into the loaders, the renderer, images,
-# io or the front end; and only the SIMD layer (src/simd/, src/bvh/simd/) includes <immintrin.h>.
+# io or the front end; the CUDA backend (gpu) sits on the core, below bench and the front end;
+# and only the SIMD layer (src/simd/, src/bvh/simd/) includes <immintrin.h>.
 # Usage: layering.sh REPOSITORY_ROOT
 set -euo pipefail
 root="$1"
@@ -16,15 +17,16 @@ declare -A allowed=(
   [kernels]="math geometry rays simd platform kernels"
   [bvh]="math geometry rays simd platform kernels bvh"
   [accel]="$core"
+  [gpu]="$core gpu"
   [io]="$core io"
   [image]="$core io image"
   [scene]="$core io image scene"
   [shaders]="$core io image scene shaders"
   [render]="$core io image scene shaders render"
-  [bench]="$core io bench"
-  [accuracy]="$core io bench accuracy"
+  [bench]="$core io gpu bench"
+  [accuracy]="$core io gpu bench accuracy"
   [distributed]="$core io image scene shaders render distributed"
-  [app]="$core io image scene shaders render bench accuracy distributed app"
+  [app]="$core io image scene shaders render gpu bench accuracy distributed app"
 )
 status=0
 checked=0
@@ -49,7 +51,7 @@ for dir in "$root"/src/*/ "$root"/shaders/; do
       echo "FAIL: ${file#"$root"/} includes <immintrin.h> outside the SIMD layer"
       status=1
     fi
-  done < <(find "$dir" -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.inl' \) -print0)
+  done < <(find "$dir" -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.inl' -o -name '*.cu' -o -name '*.cuh' \) -print0)
 done
 echo "checked $checked files"
 if [[ $checked -eq 0 ]]; then echo "FAIL: no sources under $root/src"; exit 1; fi
