@@ -9,6 +9,7 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/device_option.h"
 #include "app/trace_options.h"
 #include "distributed/rays_across_ranks.h"
 #include "io/hits_csv.h"
@@ -24,19 +25,25 @@ struct HitsArgs {
   std::string mesh, rays, output;
   bool any = false;
   TraceOptions trace;
+  DeviceOptions device;
 };
 
 int run_hits(const HitsArgs& args) {
   const TraceConfig config = resolve_trace_options(args.trace);
   const AccelKind kind = resolve_accel(args.trace);
+  const bool cuda = resolve_device(args.device, config.intersector);
   const ObjModel model = load_obj(args.mesh);
   for (const std::string& w : model.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   // Under mpirun rank 0 reads the rays and writes the answers (its share of the rays goes to each rank).
   const bool root = cluster().root();
+  if (cuda && cluster().distributed())
+    throw InputError("--device cuda runs in one process: launch it without mpirun, or use --device cpu");
   const RayBatch rays = root ? read_rays_csv(args.rays) : RayBatch{};
+  if (cuda) require_cuda_device();
   OutputSink out(root ? args.output : "");  // opened before tracing: an unwritable path fails fast
 
-  const auto accel = make_accelerator(kind, model.mesh, config);
+  const auto accel = cuda ? nullptr : make_accelerator(kind, model.mesh, config);
+  const auto tracer = cuda ? cuda_tracer(model.mesh) : nullptr;
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();  // CPU time too: wall time inflates on a shared machine
   std::size_t hit_count = 0;
@@ -44,10 +51,16 @@ int run_hits(const HitsArgs& args) {
   std::vector<uint8_t> occluded;
   RankLoads loads;
   if (args.any) {
-    trace_occluded_across_ranks(cluster(), *accel, rays, occluded, loads);
+    if (cuda)
+      occluded = cuda_occluded(*tracer, rays, config.intersector, args.device);
+    else
+      trace_occluded_across_ranks(cluster(), *accel, rays, occluded, loads);
     for (uint8_t o : occluded) hit_count += o;
   } else {
-    trace_closest_across_ranks(cluster(), *accel, rays, hits, loads);
+    if (cuda)
+      hits = cuda_closest(*tracer, rays, config.intersector, args.device);
+    else
+      trace_closest_across_ranks(cluster(), *accel, rays, hits, loads);
     for (const Hit& h : hits) hit_count += h.hit();
   }
   if (!root) return 0;
@@ -63,8 +76,9 @@ int run_hits(const HitsArgs& args) {
                "hits: %zu rays, %zu triangles, %zu %s, %.3f s (%.3f s cpu), %.2f Mrays/s (%s, isa %s, "
                "intersector %s, %d threads)\n",
                rays.size(), model.mesh.size(), hit_count, args.any ? "occluded" : "hits", seconds,
-               cpu_seconds, seconds > 0 ? rays.size() / seconds * 1e-6 : 0.0, accel_name(kind),
-               isa_name(config.isa), intersector_name(config.intersector), omp_get_max_threads());
+               cpu_seconds, seconds > 0 ? rays.size() / seconds * 1e-6 : 0.0,
+               cuda ? device_summary(*tracer, args.device).c_str() : accel_name(kind), isa_name(config.isa),
+               intersector_name(config.intersector), omp_get_max_threads());
   if (cluster().distributed()) std::fprintf(stderr, "hits: %s", loads.text().c_str());
   return 0;
 }
@@ -81,6 +95,8 @@ Output (stdout, or -o FILE written atomically):
   Floats are printed so that they read back to the same float.
 A one-line summary (rays, hits, tracing seconds on the wall clock and of CPU, Mrays/s, isa,
 intersector, threads) goes to stderr.
+With --device cuda the rays are traced brute force on the GPU (docs/gpu.md): the same hits as the
+CPU's AVX2/AVX-512 kernels; no CUDA device is a runtime failure (exit 1, nothing written).
 Exit status: 0 done, 2 bad input or usage (message `file:line: what is wrong`), 1 runtime failure
 (e.g. the output cannot be written). See docs/formats.md.
 
@@ -103,6 +119,7 @@ void register_hits_command(CommandLine& cli) {
       .flag("--any", args.any, "any-hit (occlusion) query: print ray,hit with 0/1")
       .option("-o,--output", args.output, "output CSV file (default: standard output)");
   add_trace_options(cmd, args.trace, true);
+  add_device_options(cmd, args.device);
   cmd.footer(kHitsFooter).run([] { return run_hits(args); });
 }
 

@@ -1,10 +1,11 @@
-// `rayvec info`: what this CPU offers, which ISA rayvec picks, threads, library versions.
+// `rayvec info`: what this CPU offers, which ISA rayvec picks, threads, library versions, CUDA.
 #include <omp.h>
 
 #include <cstdio>
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/device_option.h"
 #include "platform/isa.h"
 #include "kernels/triangle_kernels.h"
 
@@ -29,6 +30,7 @@ void register_info_command(CommandLine& cli) {
     }
     std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
     std::printf("compiler: g++ %s, OpenMP %d\n", __VERSION__, _OPENMP);
+    print_cuda_info();
     return 0;
   });
 }

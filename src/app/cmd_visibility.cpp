@@ -12,6 +12,7 @@
 #include "accel/visibility.h"
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/device_option.h"
 #include "app/trace_options.h"
 #include "distributed/rays_across_ranks.h"
 #include "geometry/coordinate_range.h"
@@ -26,6 +27,7 @@ namespace {
 struct VisibilityArgs {
   std::string verts, faces, origin = "0,0,0", output;
   TraceOptions trace;
+  DeviceOptions device;
 };
 
 // "X,Y,Z" with three finite numbers; InputError (exit 2) otherwise.
@@ -54,12 +56,16 @@ int run_visibility(const VisibilityArgs& args) {
   const Vec3f origin = parse_origin(args.origin);
   const TraceConfig config = resolve_trace_options(args.trace);
   const AccelKind kind = resolve_accel(args.trace);
+  const bool cuda = resolve_device(args.device, config.intersector);
   if (args.verts == "-" && args.faces == "-")
     throw InputError("--verts and --faces cannot both read standard input (give one of them as a file)");
   // Under mpirun rank 0 reads the inputs (standard input reaches it alone) and shares them.
   const bool root = cluster().root();
+  if (cuda && cluster().distributed())
+    throw InputError("--device cuda runs in one process: launch it without mpirun, or use --device cpu");
   std::vector<Vec3f> verts = root ? read_verts_csv(args.verts) : std::vector<Vec3f>{};
   auto faces = root ? read_faces_csv(args.faces, verts.size()) : std::vector<std::array<uint32_t, 3>>{};
+  if (cuda) require_cuda_device();
   OutputSink out(root ? args.output : "");
   cluster().broadcast(verts);
   cluster().broadcast(faces);
@@ -69,12 +75,14 @@ int run_visibility(const VisibilityArgs& args) {
     std::fprintf(stderr,
                  "warning: %s: %zu of %zu faces dropped: they use a vertex with a non-finite coordinate\n",
                  args.faces.c_str(), scene.dropped, faces.size());
-  const auto accel = make_accelerator(kind, scene.mesh, config);
+  const auto accel = cuda ? nullptr : make_accelerator(kind, scene.mesh, config);
+  const auto tracer = cuda ? cuda_tracer(scene.mesh) : nullptr;
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();  // CPU time too: wall time inflates on a shared machine
   RankLoads loads;
   const std::vector<Visibility> result =
-      visibility_across_ranks(cluster(), *accel, scene.mesh, verts, origin, loads);
+      cuda ? cuda_visibility(*tracer, verts, origin, config.intersector, args.device)
+           : visibility_across_ranks(cluster(), *accel, scene.mesh, verts, origin, loads);
   if (!root) return 0;
   const double seconds = seconds_since(start);
   const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
@@ -94,8 +102,8 @@ int run_visibility(const VisibilityArgs& args) {
       "visibility: %zu vertices (%zu visible, %zu blocked, %zu nan), %zu triangles, %.3f s (%.3f s cpu) "
       "(%s, isa %s, intersector %s, %d threads)\n",
       result.size(), visible, result.size() - visible - undefined, undefined, scene.mesh.size(), seconds,
-      cpu_seconds, accel_name(kind), isa_name(config.isa), intersector_name(config.intersector),
-      omp_get_max_threads());
+      cpu_seconds, cuda ? device_summary(*tracer, args.device).c_str() : accel_name(kind),
+      isa_name(config.isa), intersector_name(config.intersector), omp_get_max_threads());
   if (cluster().distributed()) std::fprintf(stderr, "visibility: %s", loads.text().c_str());
   return 0;
 }
@@ -111,6 +119,8 @@ Output (stdout, or -o FILE written atomically): one line per vertex row, in orde
   nan  the vertex has a non-finite coordinate
 Triangles with a corner at the vertex's position never block it. Faces that use a non-finite vertex
 are dropped (one warning on stderr). A non-integer, negative or out-of-range index is an error.
+With --device cuda the segments are traced brute force on the GPU (docs/gpu.md): the same answers;
+no CUDA device is a runtime failure (exit 1, nothing written), a build without CUDA a usage error.
 Exit status: 0 done, 2 bad input or usage (`file:line: what is wrong`), 1 runtime failure.
 See docs/formats.md.
 
@@ -136,6 +146,7 @@ void register_visibility_command(CommandLine& cli) {
       .option("--origin", args.origin, "the eye point X,Y,Z")
       .option("-o,--output", args.output, "output file (default: standard output)");
   add_trace_options(cmd, args.trace, true);
+  add_device_options(cmd, args.device);
   cmd.footer(kVisibilityFooter).run([] { return run_visibility(args); });
 }
 
