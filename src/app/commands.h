@@ -17,5 +17,6 @@ void register_accuracy_command(CommandLine& cli);
 void register_bench_paper_command(Command& bench);
 void register_bench_rays_command(Command& bench);
 void register_bench_obj_command(Command& bench);
+void register_bench_visibility_command(Command& bench);
 
 }  // namespace rayvec

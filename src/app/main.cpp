@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
   rayvec::register_bench_paper_command(bench);
   rayvec::register_bench_rays_command(bench);
   rayvec::register_bench_obj_command(bench);
+  rayvec::register_bench_visibility_command(bench);
   int status = cli.main(argc, argv);
   // Every command's output (and --help) ends here: a full disk or a closed pipe found only at the
   // final flush must not pass for success (`rayvec info > /dev/full`).
