@@ -13,6 +13,7 @@
 #include "app/trace_options.h"
 #include "distributed/rays_across_ranks.h"
 #include "io/hits_csv.h"
+#include "io/input_error.h"
 #include "io/output_sink.h"
 #include "io/rays_csv.h"
 #include "platform/stopwatch.h"
