@@ -3,7 +3,8 @@
 # Skips apt entirely when everything is already installed. Embree is optional (benchmark rival only):
 # pass --with-embree to install it too. --with-fuzz adds clang-14 and its libFuzzer runtime
 # (scripts/fuzz.sh, tests/fuzz/); the normal build and test path does not need them. --with-mpi adds
-# OpenMPI (scripts/test_mpi.sh, docs/distributed.md).
+# OpenMPI (scripts/test_mpi.sh, docs/distributed.md). --with-ccache adds ccache (CI shares compiled objects
+# between its configurations).
 set -euo pipefail
 packages=(build-essential cmake pkg-config
           libtinyobjloader-dev libfast-float-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
@@ -15,6 +16,7 @@ for flag in "$@"; do
     --with-embree) packages+=(libembree-dev) ;;
     --with-fuzz) packages+=(clang-14 libclang-rt-14-dev) ;;
     --with-mpi) packages+=(openmpi-bin libopenmpi-dev) ;;
+    --with-ccache) packages+=(ccache) ;;
   esac
 done
 
