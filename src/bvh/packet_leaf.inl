@@ -36,8 +36,8 @@ struct MtPacketRays {
 // One triangle, slot i, broadcast to every lane (the `at` of mt_numerators_core).
 template <class V>
 struct MtTriangleBroadcast {
-  uint32_t i;
-  RAYVEC_INLINE V operator()(const float* a) const { return V::broadcast(a[slot_offset(i)]); }
+  const float* p;  // T.v0x + slot_offset(i)
+  RAYVEC_INLINE V operator()(uint32_t row) const { return V::broadcast(p[row * kSlotBlock]); }
 };
 
 // The end of a packet leaf: the lanes in `found` have a nearest hit in the leaf, t, u, v and the
@@ -110,8 +110,9 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   // the steps that pass are still taken in slot order.
   uint32_t i = begin;
   for (; i + 1 < end; i += 2) {
-    const MtNumerators<V> c0 = mt_numerator_values<V>(T, MtTriangleBroadcast<V>{i}, q.r);
-    const MtNumerators<V> c1 = mt_numerator_values<V>(T, MtTriangleBroadcast<V>{i + 1}, q.r);
+    const MtNumerators<V> c0 = mt_numerator_values<V>(MtTriangleBroadcast<V>{T.v0x + slot_offset(i)}, q.r);
+    const MtNumerators<V> c1 =
+        mt_numerator_values<V>(MtTriangleBroadcast<V>{T.v0x + slot_offset(i + 1)}, q.r);
     const unsigned p0 = bits(mt_sign_pretest<V, TminZero>(c0, active, neg_lo, hi));
     const unsigned p1 = bits(mt_sign_pretest<V, TminZero>(c1, active, neg_lo, hi));
     if ((p0 | p1) == 0) continue;
@@ -119,7 +120,7 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
     if (p1) step(c1, i + 1);  // its pre-test used the older, larger hi: still conservative
   }
   if (i < end) {
-    const MtNumerators<V> c = mt_numerator_values<V>(T, MtTriangleBroadcast<V>{i}, q.r);
+    const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleBroadcast<V>{T.v0x + slot_offset(i)}, q.r);
     if (any(mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi))) step(c, i);
   }
   if (found == 0) return 0;

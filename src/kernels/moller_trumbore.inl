@@ -230,39 +230,44 @@ struct MtNumerators {
 
 // Where the float `mt` arithmetic gets its triangle values: W consecutive triangles, one per lane
 // (brute force and the single-ray leaf kernel), or one triangle broadcast to every lane (the
-// ray-packet leaf kernel, packet_leaf.inl). `at(T.v0x)` gives the lanes of that array. Both go
-// through mt_numerators_core, so a ray gets bit-identical numerators whichever way the lanes are
-// laid out; the values are fetched where they are used, as before the split.
+// ray-packet leaf kernel, packet_leaf.inl). `at(kRowV0 + a)` gives the lanes of that row, read from
+// the slot's v0x position `p` (every row of a block lies a fixed distance from it, triangle_soa.h:
+// one pointer live instead of twelve row pointers reloaded per step). Both go through
+// mt_numerators_core, so a ray gets bit-identical numerators whichever way the lanes are laid out;
+// the values are fetched where they are used, as before the split.
 template <class V>
 struct MtTriangleLanes {
-  uint32_t i;
-  RAYVEC_INLINE V operator()(const float* a) const { return V::load(a + slot_offset(i)); }
+  const float* p;  // T.v0x + slot_offset(i)
+  RAYVEC_INLINE V operator()(uint32_t row) const { return V::load(p + row * kSlotBlock); }
 };
+template <class V>
+RAYVEC_INLINE MtTriangleLanes<V> mt_lanes(const TriangleArrays& T, uint32_t i) {
+  return {T.v0x + slot_offset(i)};
+}
 
 // The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` against the triangle lanes
 // `at` gives — un, vn, tn and |det| only (`mask` is left unset; mt_numerators_core and
 // mt_closest_step add their tests).
 template <class V, class At>
-RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const TriangleArrays& T, const At& at,
-                                                  const RayLanes<V>& r) {
+RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const At& at, const RayLanes<V>& r) {
   MtNumerators<V> out;
   // s = v0 − o, c = s × d
-  const V v0x = at(T.v0x), v0y = at(T.v0y), v0z = at(T.v0z);
+  const V v0x = at(kRowV0), v0y = at(kRowV0 + 1), v0z = at(kRowV0 + 2);
   const V sx = v0x - r.ox, sy = v0y - r.oy, sz = v0z - r.oz;
   const V cx = fmsub(sy, r.dz, sz * r.dy);
   const V cy = fmsub(sz, r.dx, sx * r.dz);
   const V cz = fmsub(sx, r.dy, sy * r.dx);
   // det = d · ng
-  const V ngx = at(T.ngx), ngy = at(T.ngy), ngz = at(T.ngz);
+  const V ngx = at(kRowNg), ngy = at(kRowNg + 1), ngz = at(kRowNg + 2);
   const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
   const V sign = sign_bit(det);
   out.adet = abs(det);
   // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
   // one xor fewer than folding it)
   // e2 = v2 − v0 and e1 = v1 − v0: the fill's float subtraction, bit for bit (triangle_soa.h)
-  const V e2x = at(T.v2x) - v0x, e2y = at(T.v2y) - v0y, e2z = at(T.v2z) - v0z;
+  const V e2x = at(kRowV2) - v0x, e2y = at(kRowV2 + 1) - v0y, e2z = at(kRowV2 + 2) - v0z;
   out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), sign);
-  const V e1x = at(T.v1x) - v0x, e1y = at(T.v1y) - v0y, e1z = at(T.v1z) - v0z;
+  const V e1x = at(kRowV1) - v0x, e1y = at(kRowV1 + 1) - v0y, e1z = at(kRowV1 + 2) - v0z;
   out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
   out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
   return out;
@@ -280,9 +285,9 @@ RAYVEC_INLINE typename V::Mask mt_edges(const MtNumerators<V>& c) {
 // tn < hi·|det|, but NOT the lower one (tmin), which the callers add (mt_numerators; the packet
 // kernel per lane). |det| = 0 fails the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN).
 template <class V, class At>
-RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const TriangleArrays& T, const At& at, const RayLanes<V>& r,
-                                                 typename V::Mask active, V hi) {
-  MtNumerators<V> out = mt_numerator_values<V>(T, at, r);
+RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const At& at, const RayLanes<V>& r, typename V::Mask active,
+                                                 V hi) {
+  MtNumerators<V> out = mt_numerator_values<V>(at, r);
   out.mask = active & mt_edges(out) & (out.tn < hi * out.adet);
   return out;
 }
@@ -310,7 +315,7 @@ RAYVEC_INLINE typename V::Mask mt_sign_pretest(const MtNumerators<V>& c, typenam
 template <class V, bool TminZero>
 RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
                                             typename V::Mask active, V lo, V hi) {
-  MtNumerators<V> out = mt_numerators_core<V>(T, MtTriangleLanes<V>{i}, r, active, hi);
+  MtNumerators<V> out = mt_numerators_core<V>(mt_lanes<V>(T, i), r, active, hi);
   if constexpr (TminZero)
     out.mask = out.mask & (out.tn >= V::broadcast(0.0f));  // no multiply for tmin = 0
   else
@@ -341,7 +346,7 @@ struct MtBest {
 template <class V, bool TminZero>
 RAYVEC_INLINE void mt_closest_step(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
                                    typename V::Mask active, V neg_lo, MtBest<V>& b) {
-  const MtNumerators<V> c = mt_numerator_values<V>(T, MtTriangleLanes<V>{i}, r);
+  const MtNumerators<V> c = mt_numerator_values<V>(mt_lanes<V>(T, i), r);
   const typename V::Mask pre = mt_sign_pretest<V, TminZero>(c, active, neg_lo, b.hi);
   if (!any(pre)) return;
   // the ordered tests (NaN and |det| = 0 fail them) and the exact depth test, only for steps where
@@ -432,14 +437,64 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
   for (int k = 0; k < R; ++k) mt_finish<V>(T, q[k].b, q[k].initial, hits[k]);
 }
 
+// One ray against [begin, end), the winner kept as scalars: a step where a lane passes the exact
+// test is reduced at once (its nearest t by one hmin; of equal t its lowest lane, the lowest id, as
+// ids increase in a range), and later steps accept only t below it — a later step holds higher
+// ids, so a tie keeps the earlier hit. Same hit as closest_mt_float_rays (whose per-lane best
+// vectors are reduced at the end), but only the ray's lanes and the pre-test threshold stay live
+// across steps: the single-ray leaf then fits AVX2's 16 vector registers without spilling them.
+template <class V, bool TminZero>
+void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+  constexpr uint32_t W = V::W;
+  const RayLanes<V> r = broadcast_ray<V>(ray);
+  const float limit = ray.tmax < hit.t ? ray.tmax : hit.t;
+  const float initial = next_up(limit);  // best while nothing is found: accepts t <= limit
+  float best = initial, un = 0.0f, vn = 0.0f, adet = 0.0f;
+  uint32_t winner = 0;
+  V hi = V::broadcast(initial * kMtWiden);
+  const V neg_lo = V::broadcast(0.0f) - V::broadcast(mt_lower(ray.tmin));
+  const auto step = [&](uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
+    const MtNumerators<V> c = mt_numerator_values<V>(mt_lanes<V>(T, i), r);
+    const typename V::Mask pre = mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi);
+    if (!any(pre)) return;
+    const V t = c.tn / c.adet;
+    const typename V::Mask m =
+        pre & mt_edges(c) & (c.adet > V::broadcast(0.0f)) & (t >= r.tmin) & (t < V::broadcast(best));
+    if (!any(m)) return;
+    best = hmin(select(m, V::broadcast(__builtin_inff()), t));
+    const unsigned k = unsigned(__builtin_ctz(bits(m & (t <= V::broadcast(best)))));
+    alignas(64) float us[W], vs[W], as[W];
+    c.un.store(us);
+    c.vn.store(vs);
+    c.adet.store(as);
+    un = us[k];
+    vn = vs[k];
+    adet = as[k];
+    winner = i + k;
+    hi = V::broadcast(best * kMtWiden);
+  };
+  uint32_t i = begin;
+  if (i % W != 0 && i < end) {  // a head step if begin is not on a step
+    const uint32_t head = first_step(i, W);
+    step(head, step_lanes<V>(head, begin, end));
+    i = head + W;
+  }
+  for (; end - i >= W && i < end; i += W) step(i, first_lanes(V{}, W));
+  if (i < end) step(i, first_lanes(V{}, end - i));
+  if (!(best < initial)) return;
+  const int32_t id = T.id[slot_offset(winner)];
+  if (best < hit.t || (best == hit.t && (hit.tri < 0 || id < hit.tri)))
+    hit = Hit{best, (0.0f - un) / adet, vn / adet, id};  // 0 − un: no −0
+}
+
 // tmin = 0 (camera and most secondary rays) drops the multiply of the lower depth pre-test.
 template <class V>
 void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
   if (!finite_ray(ray)) return;
   if (ray.tmin == 0.0f)
-    closest_mt_float_rays<V, true, 1>(T, begin, end, &ray, &hit);
+    closest_mt_float_one<V, true>(T, begin, end, ray, hit);
   else
-    closest_mt_float_rays<V, false, 1>(T, begin, end, &ray, &hit);
+    closest_mt_float_one<V, false>(T, begin, end, ray, hit);
 }
 
 template <class V>

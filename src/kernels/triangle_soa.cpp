@@ -30,7 +30,7 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
   // row k of every block starts kBlock·k 4-byte values into the block; hot rows (v0, ng, v2, v1:
   // what the float `mt` kernel reads) first, then the ids. Each row holds one type (the id row
   // only int32, the others only float).
-  enum Row { kV0, kNg = 3, kV2 = 6, kV1 = 9, kId = 12 };
+  constexpr uint32_t kV0 = kRowV0, kNg = kRowNg, kV2 = kRowV2, kV1 = kRowV1, kId = kRowId;
   float* base = static_cast<float*>(blocks_.get());
   int32_t* ids = reinterpret_cast<int32_t*>(base + std::size_t(kId) * kBlock);
 

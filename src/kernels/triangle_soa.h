@@ -37,6 +37,9 @@ inline constexpr uint32_t kSlotBlockFloats = kSlotBlock * kSlotRows;
 // The rows the float `mt` kernels read (v0, ng, v2, v1) are rows 0..kMtRows−1 of a block, v0x first,
 // so a block's hot part is the kMtRows·64 bytes from its slot-0 v0x.
 inline constexpr uint32_t kMtRows = 12;
+// The first row of each vector in a block: row k holds kSlotBlock values and starts kSlotBlock·k
+// values after the block's v0x row.
+inline constexpr uint32_t kRowV0 = 0, kRowNg = 3, kRowV2 = 6, kRowV1 = 9, kRowId = 12;
 
 // Where slot i of a row lives, relative to that row's pointer in TriangleArrays. Internal linkage
 // (static): ISA units and baseline units each keep their own copy.
@@ -46,6 +49,9 @@ static constexpr uint32_t slot_offset(uint32_t i) {
 
 // What the ISA kernels see: plain pointers, no member functions (ISA units must not instantiate
 // inline code shared with baseline units). Every row, ids included, is read at slot_offset(i).
+// The rows are those of one blocked buffer, so row k of slot i is also at
+// v0x + slot_offset(i) + kSlotBlock·k (kRowV0 …): the float `mt` kernels address all twelve rows
+// from that one pointer instead of loading twelve row pointers per step.
 struct TriangleArrays {
   const float *v0x, *v0y, *v0z;
   const float *v1x, *v1y, *v1z;
