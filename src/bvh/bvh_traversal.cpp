@@ -26,7 +26,7 @@ int default_bvh_width(Isa isa, std::size_t triangles) {
 }
 
 bool default_direct_leaf(Isa isa, std::string_view vendor) {
-  return isa == Isa::avx512 && vendor == "GenuineIntel";
+  return isa == Isa::avx2 || (isa == Isa::avx512 && vendor == "GenuineIntel");
 }
 
 const BvhTraversal& bvh_traversal(Isa isa, int width) {

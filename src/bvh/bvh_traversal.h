@@ -46,11 +46,11 @@ inline constexpr std::size_t kWideNodeTriangles = 32768;
 int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
 int default_bvh_width(Isa isa, std::size_t triangles);
 
-// Whether the closest-hit traversal calls the float `mt` leaf kernel directly (inlined) instead of
-// through the kernel table, on a CPU whose cpuid vendor is `vendor`: AVX-512 on Intel only, where
-// it saves the save and reload of the traversal's ray registers around every leaf call; on AMD it
-// measured slower (benchmarks.md#decision-direct-leaf-call). Other ISAs have no direct form. Same
-// results either way.
+// Whether the closest-hit traversal calls the float `mt` leaf kernel directly instead of through
+// the kernel table, on a CPU whose cpuid vendor is `vendor`: AVX2 everywhere and AVX-512 on Intel,
+// where it saves the save and reload of the traversal's ray registers around every leaf call; on
+// AMD's AVX-512 it measured slower (benchmarks.md#decision-direct-leaf-call). The scalar ISA has
+// no direct form. Same results either way.
 bool default_direct_leaf(Isa isa, std::string_view vendor);
 
 // The table for (isa, width), with the direct leaf call where `direct_leaf` and the ISA has one;

@@ -20,6 +20,21 @@ constexpr Isa kThisIsa = Isa::avx2;
 #include "bvh/packet_traversal.inl"
 
 namespace {
+// The closest-hit traversal's leaves by this unit's float `mt` single-ray kernel, called directly
+// (not through the table: the traversal's ray registers are not saved around an indirect call,
+// and the call skips the table entry's finite_ray test, which the rays reaching a leaf pass:
+// bvh.cpp rejects the others); other tables through the table. Same results.
+struct DirectMtLeaf {
+  static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
+                                    uint32_t end, const Ray& ray, Hit& hit) {
+    if (k.intersector != Intersector::mt || k.isa != kThisIsa) return k.closest(tris, begin, end, ray, hit);
+    if (ray.tmin == 0.0f)
+      closest_mt_float_one<vfloat, true>(tris, begin, end, ray, hit);
+    else
+      closest_mt_float_one<vfloat, false>(tris, begin, end, ray, hit);
+  }
+};
+
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
 constinit const BvhTraversal k8{Isa::avx2,
                                 8,
@@ -33,12 +48,26 @@ constinit const BvhTraversal k16{Isa::avx2,
                                  &bvh_occluded<BoxLanes16>,
                                  &bvh_closest_packet<BoxLanes16, PacketLanes8>,
                                  8};
+constinit const BvhTraversal k8_direct{Isa::avx2,
+                                       8,
+                                       &bvh_closest<BoxLanes8, DirectMtLeaf>,
+                                       &bvh_occluded<BoxLanes8>,
+                                       &bvh_closest_packet<BoxLanes8, PacketLanes8>,
+                                       8,
+                                       true};
+constinit const BvhTraversal k16_direct{Isa::avx2,
+                                        16,
+                                        &bvh_closest<BoxLanes16, DirectMtLeaf>,
+                                        &bvh_occluded<BoxLanes16>,
+                                        &bvh_closest_packet<BoxLanes16, PacketLanes8>,
+                                        8,
+                                        true};
 }  // namespace
 
-const BvhTraversal* bvh_traversal(int width, bool /*direct_leaf: AVX-512 only*/) {
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf) {
   switch (width) {
-    case 8: return &k8;
-    case 16: return &k16;
+    case 8: return direct_leaf ? &k8_direct : &k8;
+    case 16: return direct_leaf ? &k16_direct : &k16;
     default: return nullptr;
   }
 }

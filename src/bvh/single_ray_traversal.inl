@@ -77,8 +77,8 @@ RAYVEC_INLINE uint32_t leaf_begin(uint32_t ref) { return (ref >> 5) & (kMaxLeafB
 RAYVEC_INLINE uint32_t leaf_end(uint32_t ref) { return leaf_begin(ref) + (ref & 31u) + 1; }
 
 // How the closest-hit traversal intersects a leaf: through the kernel table (any intersector), or,
-// where an ISA unit defines such a policy, by calling its float `mt` kernel directly, inlined
-// (DirectMtLeaf, bvh_traversal_avx512.cpp). Both give the table's results.
+// where an ISA unit defines such a policy, by calling its float `mt` kernel directly (DirectMtLeaf,
+// bvh_traversal_<isa>.cpp). Both give the table's results.
 struct TableLeaf {
   static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
                                     uint32_t end, const Ray& ray, Hit& hit) {
@@ -184,11 +184,13 @@ bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const T
                         : static_cast<uint32_t*>(__builtin_alloca(bvh.stack_size * sizeof(uint32_t)));
   uint32_t sp = 0;
   uint32_t ref = 0;
+  // tmin and tmax in locals: read through `ray` they are reloaded after every leaf call
+  const float tmin = ray.tmin, tmax = ray.tmax;
   for (;;) {
     if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];
       alignas(64) float dist[N];
-      unsigned mask = boxes.hits(node.bounds, ray.tmin, ray.tmax, dist);
+      unsigned mask = boxes.hits(node.bounds, tmin, tmax, dist);
       if (mask != 0) {
         ref = node.ref[__builtin_ctz(mask)];
         for (mask &= mask - 1; mask != 0; mask &= mask - 1) stack[sp++] = node.ref[__builtin_ctz(mask)];

@@ -70,9 +70,10 @@ TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
 }
 
 // The closest-hit traversal's two leaf calls — through the kernel table, and the float `mt`
-// kernel called directly (AVX-512; the default on Intel) — both equal brute force, with tmin < 0,
-// = 0 and > 0 (the direct call picks the kernel's tmin = 0 form itself); with the `mt` intersector on
-// AVX-512 they are two different traversal functions, elsewhere the same (table) one.
+// kernel called directly (AVX2 and AVX-512; the default on AVX2 and on Intel's AVX-512) — both
+// equal brute force, with tmin < 0, = 0 and > 0 (the direct call picks the kernel's tmin = 0 form
+// itself); with the `mt` intersector on AVX2 and AVX-512 they are two different traversal
+// functions, on the scalar ISA the same (table) one.
 TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   std::vector<Ray> rays = test::random_rays(1500, 1.5f, 21);
   for (std::size_t i = 0; i < rays.size(); ++i)
@@ -88,7 +89,7 @@ TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   direct.direct_leaf = 1;
   const TriangleMesh one = test::random_soup(10, 0.1f, 23);
   const BvhAccelerator a(one, config(), table), b(one, config(), direct);
-  const bool has_direct = GetParam().isa == Isa::avx512 && GetParam().intersector == Intersector::mt;
+  const bool has_direct = GetParam().isa != Isa::scalar && GetParam().intersector == Intersector::mt;
   if (has_direct)
     EXPECT_NE(a.traversal().closest, b.traversal().closest);
   else
@@ -96,12 +97,12 @@ TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   EXPECT_EQ(b.traversal().direct_leaf, has_direct);
 }
 
-TEST(BvhTraversalRule, DirectLeafCallOnIntelAvx512Only) {
+TEST(BvhTraversalRule, DirectLeafCallOnAvx2AndIntelAvx512) {
   EXPECT_TRUE(default_direct_leaf(Isa::avx512, "GenuineIntel"));
   for (const char* other : {"AuthenticAMD", "HygonGenuine", ""})
     EXPECT_FALSE(default_direct_leaf(Isa::avx512, other));
-  for (const char* vendor : {"GenuineIntel", "AuthenticAMD"}) {
-    EXPECT_FALSE(default_direct_leaf(Isa::avx2, vendor));
+  for (const char* vendor : {"GenuineIntel", "AuthenticAMD", ""}) {
+    EXPECT_TRUE(default_direct_leaf(Isa::avx2, vendor));
     EXPECT_FALSE(default_direct_leaf(Isa::scalar, vendor));
   }
 }
