@@ -13,7 +13,8 @@ if [[ -z "$nvcc" ]]; then
   exit 0
 fi
 "$root/scripts/install-deps.sh"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRAYVEC_CUDA=ON -DCMAKE_CUDA_COMPILER="$nvcc" >/dev/null
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRAYVEC_CUDA=ON -DRAYVEC_MPI=OFF \
+  -DCMAKE_CUDA_COMPILER="$nvcc" >/dev/null
 cmake --build "$build" -j "$(nproc)" --target rayvec-cli rayvec_cuda_tests
 (cd "$build" && ctest --output-on-failure -j "$(nproc)" -R Cuda)
 

@@ -9,7 +9,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${RAYVEC_MPI_BUILD:-$root/build-mpi}"
 "$root/scripts/install-deps.sh" --with-mpi
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRAYVEC_MPI=ON >/dev/null
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRAYVEC_MPI=ON -DRAYVEC_CUDA=OFF >/dev/null
 cmake --build "$build" -j "$(nproc)" --target rayvec-cli rayvec_mpi rayvec_mpi_tests
 cd "$build"
 ctest --output-on-failure -R Mpi "$@"
