@@ -3,9 +3,11 @@
 // src/bench/paper_scene.h, printing a text table or one JSON object. Measurement: src/bench/paper_bench.cpp.
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "app/command_line.h"
@@ -13,6 +15,8 @@
 #include "app/trace_options.h"
 #include "bench/paper_bench.h"
 #include "bench/paper_scene.h"
+#include "bench/paper_shares.h"
+#include "distributed/paper_across_ranks.h"
 #include "io/input_error.h"
 #include "io/json_string.h"
 #include "io/progress.h"
@@ -35,6 +39,32 @@ struct Options {
 
 double gtests(double tests, const Timing& t) { return t.seconds > 0 ? tests / t.seconds / 1e9 : 0; }
 
+std::string join_counts(const std::vector<uint64_t>& v) {
+  std::string s;
+  for (uint64_t x : v) {
+    if (!s.empty()) s += ", ";
+    s += std::to_string(x);
+  }
+  return s;
+}
+
+std::string join_seconds(const std::vector<double>& v) {
+  std::string s;
+  char buf[32];
+  for (double x : v) {
+    std::snprintf(buf, sizeof buf, "%s%.4f", s.empty() ? "" : ", ", x);
+    s += buf;
+  }
+  return s;
+}
+
+// Slowest over mean (1 = balanced); 0 without time.
+double imbalance(const std::vector<double>& seconds) {
+  double slowest = 0, sum = 0;
+  for (double x : seconds) slowest = std::max(slowest, x), sum += x;
+  return sum > 0 ? slowest / (sum / double(seconds.size())) : 0.0;
+}
+
 std::vector<const PaperModel*> chosen_models(const std::string& list) {
   std::vector<const PaperModel*> out;
   if (list.empty()) {
@@ -52,12 +82,22 @@ std::vector<const PaperModel*> chosen_models(const std::string& list) {
   return out;
 }
 
-void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
-  std::printf("\nTable 1 (one thread; seconds: median thread CPU time)%s\n",
-              divisor > 1 ? (" — rays scaled: image side / " + std::to_string(divisor) + ", rays / " +
-                             std::to_string(divisor * divisor) + " (approx.)")
-                                .c_str()
-                          : " — full paper sizes");
+void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor, int ranks) {
+  if (ranks > 1)
+    std::printf(
+        "\nTable 1 across %d ranks (each rank one thread on a contiguous share of every row's rays; "
+        "seconds: the slowest rank's median thread CPU time; t/c vm per rank)%s\n",
+        ranks,
+        divisor > 1 ? (" — rays scaled: image side / " + std::to_string(divisor) + ", rays / " +
+                       std::to_string(divisor * divisor) + " (approx.)")
+                          .c_str()
+                    : " — full paper sizes");
+  else
+    std::printf("\nTable 1 (one thread; seconds: median thread CPU time)%s\n",
+                divisor > 1 ? (" — rays scaled: image side / " + std::to_string(divisor) + ", rays / " +
+                               std::to_string(divisor * divisor) + " (approx.)")
+                                  .c_str()
+                            : " — full paper sizes");
   std::printf("%-6s %9s %6s | %9s %9s %9s %9s | %8s %8s | %8s %8s | %6s %6s %6s %6s | %5s %5s %6s | %s\n",
               "model", "rays", "tris", "original", "optimized", "vec-paper", "vec-mt", "orig/vec", "opt/vec",
               "paper o/v", "paper p/v", "G/s o", "G/s p", "G/s vp", "G/s vm", "GHz", "FMA/c", "t/c vm",
@@ -75,7 +115,7 @@ void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
           r.optimized.seconds, r.vec_paper.seconds, r.vec_mt.seconds, so, sp, r.model.speedup_original,
           r.model.speedup_optimized, gtests(r.tests(), r.original), gtests(r.tests(), r.optimized),
           gtests(r.tests(), r.vec_paper), gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.fma_per_cycle,
-          r.vec_mt.tests_per_cycle(r.tests()), (unsigned long long)r.mismatches);
+          r.vec_mt.tests_per_cycle(r.tests_per_rank()), (unsigned long long)r.mismatches);
       sum_o += so, sum_p += sp, sum_po += r.model.speedup_original, sum_pp += r.model.speedup_optimized, ++n;
     } else {
       std::printf(
@@ -84,7 +124,7 @@ void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
           r.model.name, (unsigned long long)r.rays(), r.model.triangles, "-", "-", r.vec_paper.seconds,
           r.vec_mt.seconds, "-", "-", r.model.speedup_original, r.model.speedup_optimized, "-", "-",
           gtests(r.tests(), r.vec_paper), gtests(r.tests(), r.vec_mt), r.vec_mt.ghz, r.vec_mt.fma_per_cycle,
-          r.vec_mt.tests_per_cycle(r.tests()));
+          r.vec_mt.tests_per_cycle(r.tests_per_rank()));
     }
   }
   if (n > 0)
@@ -104,33 +144,125 @@ void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor) {
       kVectorizedMinRuns);
 }
 
-void print_scaling(const std::vector<ScalingResult>& rows, uint32_t divisor) {
+void print_scaling(const std::vector<ScalingResult>& rows, uint32_t divisor, int ranks) {
   if (rows.empty()) return;
   const uint32_t side = rows.front().side;
   std::printf(
       "\nThread scaling (section 5.2): 16,777,216 rays scaled to %u (image side 4096 / %u = "
       "%u, rays / %u)\n",
       side * side, divisor, side, divisor * divisor);
-  std::printf("(wall-clock seconds, median)\n");
-  std::printf("%6s %-11s %7s %9s %8s %8s %9s\n", "tris", "intersector", "threads", "seconds", "speedup",
-              "G/s", "mismatch");
+  if (ranks > 1)
+    std::printf(
+        "across %d ranks: ranks x threads workers, each rank its share of the rays (rays per rank: %s); "
+        "the ranks start each run together and a run takes the slowest rank's wall-clock seconds, "
+        "median; speedup against %d ranks x 1 thread\n",
+        ranks, join_counts(rows.front().rank_rays).c_str(), ranks);
+  else
+    std::printf("(wall-clock seconds, median)\n");
+  std::printf("%6s %-11s %7s %9s %8s %8s %9s%s\n", "tris", "intersector", "threads", "seconds", "speedup",
+              "G/s", "mismatch", ranks > 1 ? " | imbalance, rank seconds" : "");
   double base = 0;
   for (const ScalingResult& r : rows) {
     if (r.threads == 1) base = r.time.seconds;
     const double tests = double(r.side) * r.side * r.triangles;
-    std::printf("%6u %-11s %7u %9.4f %8.2f %8.2f %9llu\n", r.triangles, intersector_name(r.intersector),
+    std::printf("%6u %-11s %7u %9.4f %8.2f %8.2f %9llu", r.triangles, intersector_name(r.intersector),
                 r.threads, r.time.seconds, base / r.time.seconds, gtests(tests, r.time),
                 (unsigned long long)r.mismatches);
+    if (ranks > 1)
+      std::printf(" | %.3f: %s", imbalance(r.rank_seconds), join_seconds(r.rank_seconds).c_str());
+    std::printf("\n");
   }
 }
 
-void print_json(const Options& o, Isa isa, int threads, uint32_t table_divisor, uint32_t scaling_divisor,
-                const std::vector<Table1Result>& table, const std::vector<ScalingResult>& scaling,
-                uint64_t mismatches) {
+// Per row: how many rays hit and the checksum of the hits (bench/paper_shares.h), equal in one
+// process and across any number of ranks; across ranks, each rank's share and times.
+void print_hits(const std::vector<Table1Result>& rows, int ranks) {
   std::printf(
-      "{\"cpu\":%s,\"isa\":%s,\"threads\":%d,\"quick\":%s,\"table1_side_divisor\":%u,"
+      "\nHits of vec-paper in input order (checksum: sum of (ray + 1) * (bits of t << 32 | triangle + 1) "
+      "mod 2^64)\n");
+  std::printf("%-6s %9s %9s %18s\n", "model", "rays", "hits", "checksum");
+  for (const Table1Result& r : rows)
+    std::printf("%-6s %9llu %9llu 0x%016llx\n", r.model.name, (unsigned long long)r.rays(),
+                (unsigned long long)r.hits, (unsigned long long)r.checksum);
+  if (ranks <= 1) return;
+  std::printf(
+      "\nAcross %d ranks: rays per rank; per column each rank's seconds (load imbalance, slowest / "
+      "mean); the gather; rays rank 0 traced again and how many differ from the gathered hits\n",
+      ranks);
+  for (const Table1Result& r : rows) {
+    std::vector<uint64_t> rays;
+    for (const Table1Share& sh : r.shares) rays.push_back(sh.rays());
+    std::printf("%-6s rays %s", r.model.name, join_counts(rays).c_str());
+    const std::pair<const char*, Timing Table1Share::*> columns[] = {{"original", &Table1Share::original},
+                                                                     {"optimized", &Table1Share::optimized},
+                                                                     {"vec-paper", &Table1Share::vec_paper},
+                                                                     {"vec-mt", &Table1Share::vec_mt}};
+    for (const auto& [name, column] : columns) {
+      if (!r.baselines && (column == &Table1Share::original || column == &Table1Share::optimized)) continue;
+      std::vector<double> seconds;
+      for (const Table1Share& sh : r.shares) seconds.push_back((sh.*column).seconds);
+      std::printf(" | %s %s (%.3f)", name, join_seconds(seconds).c_str(), share_imbalance(r.shares, column));
+    }
+    std::printf(" | gather %.3f s | traced again %llu, %llu differ\n", r.gather_seconds,
+                (unsigned long long)r.checked_rays, (unsigned long long)r.rank_differences);
+  }
+}
+
+// A JSON list of one number per rank: counts exactly, other values to 6 digits.
+template <class Get>
+std::string per_rank(const std::vector<Table1Share>& shares, Get get) {
+  std::string s = "[";
+  char buf[32];
+  for (const Table1Share& sh : shares) {
+    const auto value = get(sh);
+    if (s.size() > 1) s += ',';
+    if constexpr (std::is_integral_v<decltype(value)>)
+      s += std::to_string(value);
+    else {
+      std::snprintf(buf, sizeof buf, "%.6g", double(value));
+      s += buf;
+    }
+  }
+  return s + "]";
+}
+
+// Across ranks, a row's "shares": each rank's first ray, rays, checks, and per column its seconds,
+// repeats and probes (lists by rank) and the column's load imbalance; the gather and rank 0's second
+// look at the hits.
+void print_json_shares(const Table1Result& r) {
+  const std::vector<Table1Share>& sh = r.shares;
+  std::printf(",\"shares\":{\"first\":%s,\"rays\":%s,\"mismatches\":%s,\"mt_differences\":%s",
+              per_rank(sh, [](const Table1Share& s) { return s.first; }).c_str(),
+              per_rank(sh, [](const Table1Share& s) { return s.rays(); }).c_str(),
+              per_rank(sh, [](const Table1Share& s) { return s.mismatches; }).c_str(),
+              per_rank(sh, [](const Table1Share& s) { return s.mt_differences; }).c_str());
+  const std::pair<const char*, Timing Table1Share::*> columns[] = {
+      {"vectorized_paper", &Table1Share::vec_paper},
+      {"vectorized_mt", &Table1Share::vec_mt},
+      {"original", &Table1Share::original},
+      {"optimized", &Table1Share::optimized}};
+  for (int c = 0; c < (r.baselines ? 4 : 2); ++c) {
+    const auto column = columns[c].second;
+    std::printf(
+        ",\"%s\":{\"seconds\":%s,\"repeats\":%s,\"clock_ghz\":%s,\"fma_per_cycle\":%s,"
+        "\"imbalance\":%.4g}",
+        columns[c].first, per_rank(sh, [&](const Table1Share& s) { return (s.*column).seconds; }).c_str(),
+        per_rank(sh, [&](const Table1Share& s) { return (s.*column).repeats; }).c_str(),
+        per_rank(sh, [&](const Table1Share& s) { return (s.*column).ghz; }).c_str(),
+        per_rank(sh, [&](const Table1Share& s) { return (s.*column).fma_per_cycle; }).c_str(),
+        share_imbalance(sh, column));
+  }
+  std::printf(",\"gather_seconds\":%.6g,\"checked_rays\":%llu,\"rank_differences\":%llu}", r.gather_seconds,
+              (unsigned long long)r.checked_rays, (unsigned long long)r.rank_differences);
+}
+
+void print_json(const Options& o, Isa isa, int threads, int ranks, uint32_t table_divisor,
+                uint32_t scaling_divisor, const std::vector<Table1Result>& table,
+                const std::vector<ScalingResult>& scaling, uint64_t mismatches) {
+  std::printf(
+      "{\"cpu\":%s,\"isa\":%s,\"threads\":%d,\"ranks\":%d,\"quick\":%s,\"table1_side_divisor\":%u,"
       "\"scaling_side_divisor\":%u,\"table1\":[",
-      json_string(cpu_features().brand).c_str(), json_string(isa_name(isa)).c_str(), threads,
+      json_string(cpu_features().brand).c_str(), json_string(isa_name(isa)).c_str(), threads, ranks,
       o.quick ? "true" : "false", table_divisor, scaling_divisor);
   for (std::size_t i = 0; i < table.size(); ++i) {
     const Table1Result& r = table[i];
@@ -151,8 +283,8 @@ void print_json(const Options& o, Isa isa, int threads, uint32_t table_divisor, 
         "\"tests_per_cycle\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g},"
         "\"repeats\":{\"vectorized_paper\":%d,\"vectorized_mt\":%d}",
         r.vec_paper.ghz, r.vec_mt.ghz, r.vec_paper.fma_per_cycle, r.vec_mt.fma_per_cycle,
-        r.vec_paper.tests_per_cycle(r.tests()), r.vec_mt.tests_per_cycle(r.tests()), r.vec_paper.repeats,
-        r.vec_mt.repeats);
+        r.vec_paper.tests_per_cycle(r.tests_per_rank()), r.vec_mt.tests_per_cycle(r.tests_per_rank()),
+        r.vec_paper.repeats, r.vec_mt.repeats);
     std::printf(",\"gtests_per_s\":{\"vectorized_paper\":%.4g,\"vectorized_mt\":%.4g",
                 gtests(r.tests(), r.vec_paper), gtests(r.tests(), r.vec_mt));
     if (r.baselines)
@@ -161,19 +293,27 @@ void print_json(const Options& o, Isa isa, int threads, uint32_t table_divisor, 
     std::printf(
         "},\"paper\":{\"original\":%g,\"optimized\":%g,\"vectorized\":%g,"
         "\"speedup_original\":%g,\"speedup_optimized\":%g},\"mismatches\":%llu,"
-        "\"mt_differences\":%llu}",
+        "\"mt_differences\":%llu,\"hits\":%llu,\"checksum\":\"0x%016llx\"",
         r.model.original_s, r.model.optimized_s, r.model.vectorized_s, r.model.speedup_original,
-        r.model.speedup_optimized, (unsigned long long)r.mismatches, (unsigned long long)r.mt_differences);
+        r.model.speedup_optimized, (unsigned long long)r.mismatches, (unsigned long long)r.mt_differences,
+        (unsigned long long)r.hits, (unsigned long long)r.checksum);
+    if (ranks > 1) print_json_shares(r);
+    std::printf("}");
   }
   std::printf("],\"scaling\":[");
   for (std::size_t i = 0; i < scaling.size(); ++i) {
     const ScalingResult& r = scaling[i];
     std::printf(
         "%s{\"rays\":%llu,\"triangles\":%u,\"intersector\":%s,\"threads\":%u,"
-        "\"seconds\":%.6g,\"mismatches\":%llu}",
+        "\"seconds\":%.6g,\"mismatches\":%llu",
         i ? "," : "", (unsigned long long)(uint64_t(r.side) * r.side), r.triangles,
         json_string(intersector_name(r.intersector)).c_str(), r.threads, r.time.seconds,
         (unsigned long long)r.mismatches);
+    if (ranks > 1)
+      std::printf(",\"rank_rays\":[%s],\"rank_seconds\":[%s],\"imbalance\":%.4g",
+                  join_counts(r.rank_rays).c_str(), join_seconds(r.rank_seconds).c_str(),
+                  imbalance(r.rank_seconds));
+    std::printf("}");
   }
   std::printf("],\"mismatches\":%llu}\n", (unsigned long long)mismatches);
 }
@@ -183,19 +323,31 @@ int run(const Options& o) {
   if (const std::string err = resolve_isa(o.isa, isa); !err.empty()) throw InputError("--isa: " + err);
   check_threads_option(o.threads);
   if (o.side_divisor < 0) throw InputError("--side-divisor: must be 1 or more");
-  const int threads = o.threads > 0 ? o.threads : omp_get_num_procs();
   const auto models = chosen_models(o.models);
+  // Under mpirun every rank has checked the options by now: a bad one stops every rank here, with
+  // its message once. The scaling run's thread counts must be the same on every rank: the fewest
+  // cores any rank has, unless --threads says.
+  Cluster& ranks = cluster();
+  ranks.begin_collective();
+  std::vector<int64_t> fewest{-int64_t(o.threads > 0 ? o.threads : omp_get_num_procs())};
+  ranks.all_max(fewest);
+  const int threads = int(-fewest[0]);
   const bool testing = o.side_divisor > 0;
   const uint32_t table_divisor = testing ? o.side_divisor : (o.quick ? kQuickTableDivisor : 1);
   const uint32_t scaling_divisor =
       testing ? o.side_divisor : (o.quick ? kQuickScalingDivisor : kFullScalingDivisor);
   const double min_seconds = testing ? 0.0 : (o.quick ? 0.05 : 0.2);
 
-  if (!o.json) {
+  if (!o.json && ranks.root()) {
     std::printf("rayvec bench paper: Sena et al. (2018), Table 1 and section 5.2, on a generated scene\n");
     std::printf("cpu: %s\nisa: %s (%d floats per step)\nthreads: %d (Table 1 runs on one thread)\n",
                 cpu_features().brand.c_str(), isa_name(isa), triangle_kernels(isa, Intersector::mt).width,
                 threads);
+    if (ranks.distributed())
+      std::printf(
+          "ranks: %d (every rank traces a contiguous share of each row's rays; cpu and isa are rank "
+          "0's)\n",
+          ranks.size());
     std::printf(
         "scene: triangles with vertices uniform in [0,1)^3 (SplitMix64, seed 0x%llx); "
         "rays of a pinhole camera at (0.5,0.5,-1.5) through the cube's front face "
@@ -209,8 +361,8 @@ int run(const Options& o) {
   std::vector<Table1Result> table;
   uint64_t mismatches = 0;
   for (const PaperModel* m : models) {
-    table.push_back(
-        run_table1_row(*m, scaled_side(m->rays, table_divisor), isa, !o.no_baselines, min_seconds, progress));
+    table.push_back(table1_row_across_ranks(ranks, *m, scaled_side(m->rays, table_divisor), isa,
+                                            !o.no_baselines, min_seconds, progress));
     mismatches += table.back().mismatches;
   }
   std::vector<ScalingResult> scaling;
@@ -218,21 +370,25 @@ int run(const Options& o) {
     const uint32_t side = scaled_side(kPaperScalingSide * kPaperScalingSide, scaling_divisor);
     for (uint32_t tris : kPaperScalingTriangles)
       for (Intersector in : {Intersector::paper, Intersector::mt})
-        for (const ScalingResult& r : run_scaling(side, tris, isa, in, threads, min_seconds, progress)) {
+        for (const ScalingResult& r :
+             scaling_across_ranks(ranks, side, tris, isa, in, threads, min_seconds, progress)) {
           scaling.push_back(r);
           mismatches += r.mismatches;
         }
   }
   stages.clear();
+  if (!ranks.root()) return 0;  // rank 0 prints for all
 
   if (o.json) {
-    print_json(o, isa, threads, table_divisor, scaling_divisor, table, scaling, mismatches);
+    print_json(o, isa, threads, ranks.size(), table_divisor, scaling_divisor, table, scaling, mismatches);
   } else {
-    print_table1(table, table_divisor);
-    print_scaling(scaling, scaling_divisor);
+    print_table1(table, table_divisor, ranks.size());
+    print_hits(table, ranks.size());
+    print_scaling(scaling, scaling_divisor, ranks.size());
     std::printf(
         "\nmismatches (ids or t differing between original, optimized and vectorized paper; "
-        "or between thread counts): %llu\n",
+        "or between thread counts%s): %llu\n",
+        ranks.distributed() ? "; or between the gathered hits and rank 0's" : "",
         (unsigned long long)mismatches);
   }
   if (mismatches > 0) {

@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
   install_signal_handlers();
   if (cluster.distributed() && !rayvec::runs_across_ranks(argc, argv)) {
     rayvec::report_error(
-        "rayvec: this command does not run across ranks (render, hits and visibility do): run it "
-        "without mpirun/srun");
+        "rayvec: this command does not run across ranks (render, hits, visibility and bench paper do): "
+        "run it without mpirun/srun");
     return cluster.finish(2);
   }
   rayvec::CommandLine cli("rayvec",

@@ -14,6 +14,7 @@
 #include "bench/median.h"
 #include "bench/paper_scene.h"
 #include "bench/paper_baselines.h"
+#include "bench/paper_shares.h"
 
 namespace rayvec {
 
@@ -97,8 +98,13 @@ void trace_vectorized(const Accelerator& accel, const std::vector<Ray>& rays, st
   for (std::int64_t c = 0; c < chunks; ++c) run_chunk(c);
 }
 
-bool same_hit(const Hit& a, const Hit& b) {
-  return a.tri == b.tri && (a.tri < 0 || (a.t == b.t && a.u == b.u && a.v == b.v));
+// Rays [first, last) of `all`.
+RayBatch ray_range(const RayBatch& all, uint64_t first, uint64_t last) {
+  if (first == 0 && last >= all.size()) return all;
+  RayBatch out;
+  out.reserve(std::size_t(last - first));
+  for (uint64_t i = first; i < last && i < all.size(); ++i) out.push_back(all[std::size_t(i)]);
+  return out;
 }
 
 }  // namespace
@@ -110,19 +116,29 @@ uint32_t scaled_side(uint32_t rays, uint32_t divisor) {
 
 Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, bool baselines,
                             double min_seconds, const Progress& progress) {
-  Table1Result out;
-  out.model = model;
-  out.side = side;
-  out.baselines = baselines;
+  std::vector<Hit> hits;
+  const uint64_t n = uint64_t(side) * side;
+  Table1Share share = run_table1_share(model, side, 0, n, isa, baselines, min_seconds, progress, hits);
+  return combine_table1_shares(model, side, baselines, {share}, hits);
+}
+
+Table1Share run_table1_share(const PaperModel& model, uint32_t side, uint64_t first, uint64_t last, Isa isa,
+                             bool baselines, double min_seconds, const Progress& progress,
+                             std::vector<Hit>& paper_hits) {
+  Table1Share out;
+  out.first = first;
+  out.last = last;
   const TriangleMesh mesh = paper_triangles(model.triangles);
-  const RayBatch batch = paper_camera_rays(side);
+  const RayBatch batch = ray_range(paper_camera_rays(side), first, last);
   const std::vector<Ray> rays = to_rays(batch);
   const std::size_t n = rays.size();
   auto say = [&](const char* what) {
     if (progress) progress(std::string(model.name) + ": " + what);
   };
 
-  std::vector<Hit> vec_paper(n), vec_mt(n);
+  std::vector<Hit>& vec_paper = paper_hits;
+  std::vector<Hit> vec_mt(n);
+  vec_paper.assign(n, Hit{});
   const int runs = min_seconds > 0 ? kVectorizedMinRuns : 1;
   {
     say("vectorized (paper)");
@@ -156,9 +172,11 @@ Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, boo
 }
 
 std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa, Intersector intersector,
-                                       int max_threads, double min_seconds, const Progress& progress) {
+                                       int max_threads, double min_seconds, const Progress& progress,
+                                       uint64_t first, uint64_t last, const AllMax& all_max) {
   const TriangleMesh mesh = paper_triangles(triangles);
-  const std::vector<Ray> rays = to_rays(paper_camera_rays(side));
+  last = std::min(last, uint64_t(side) * side);
+  const std::vector<Ray> rays = to_rays(ray_range(paper_camera_rays(side), first, last));
   const auto accel = make_accelerator(AccelKind::brute, mesh, {isa, intersector});
   std::vector<Hit> reference(rays.size()), hits(rays.size());
   // The thread counts take turns, one run each per round, until each has run for min_seconds and
@@ -167,17 +185,26 @@ std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa is
   std::vector<ScalingResult> out(std::size_t(std::max(max_threads, 1)));
   std::vector<std::vector<double>> runs(out.size());
   std::vector<double> total(out.size(), 0.0);
+  const int min_runs = min_seconds > 0 ? kScalingMinRuns : 1;
   for (int round = 0; round < 15; ++round) {
-    bool done = round > 0;
+    // Which thread counts run again; across ranks, those that any rank still needs, so that every
+    // rank makes the same runs.
+    std::vector<int64_t> again(out.size());
+    for (std::size_t k = 0; k < out.size(); ++k)
+      again[k] = round == 0 || total[k] < min_seconds || int(runs[k].size()) < min_runs;
+    if (all_max) all_max(again);
+    if (std::find(again.begin(), again.end(), 1) == again.end()) break;
     for (int threads = 1; threads <= int(out.size()); ++threads) {
       const std::size_t k = std::size_t(threads - 1);
-      const int min_runs = min_seconds > 0 ? kScalingMinRuns : 1;
-      if (round > 0 && total[k] >= min_seconds && int(runs[k].size()) >= min_runs) continue;
-      done = false;
+      if (!again[k]) continue;
       if (progress && round == 0)
         progress(std::to_string(triangles) + " triangles, " + intersector_name(intersector) + ", " +
                  std::to_string(threads) + " thread(s)");
       std::vector<Hit>& dst = threads == 1 ? reference : hits;
+      if (all_max) {
+        std::vector<int64_t> start_together(1);  // a collective: no rank starts before all are here
+        all_max(start_together);
+      }
       const double start = now(false);
       trace_vectorized(*accel, rays, dst, threads);
       runs[k].push_back(now(false) - start);
@@ -185,7 +212,6 @@ std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa is
       if (threads > 1 && round == 0)
         for (std::size_t i = 0; i < rays.size(); ++i) out[k].mismatches += !same_hit(hits[i], reference[i]);
     }
-    if (done) break;
   }
   for (std::size_t k = 0; k < out.size(); ++k) {
     ScalingResult& r = out[k];
@@ -193,7 +219,17 @@ std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa is
     r.triangles = triangles;
     r.threads = uint32_t(k + 1);
     r.intersector = intersector;
-    r.time = Timing{median(runs[k]), int(runs[k].size()), 0.0};
+    r.first = first;
+    r.last = last;
+    r.share_seconds = median(runs[k]);
+    std::vector<double> slowest = runs[k];
+    if (all_max) {
+      std::vector<int64_t> ns(runs[k].size());
+      for (std::size_t i = 0; i < ns.size(); ++i) ns[i] = int64_t(runs[k][i] * 1e9);
+      all_max(ns);
+      for (std::size_t i = 0; i < ns.size(); ++i) slowest[i] = double(ns[i]) * 1e-9;
+    }
+    r.time = Timing{median(slowest), int(runs[k].size()), 0.0};
   }
   return out;
 }

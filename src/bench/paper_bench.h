@@ -10,6 +10,7 @@
 #include "io/progress.h"
 #include "kernels/intersector.h"
 #include "platform/isa.h"
+#include "rays/ray.h"
 
 namespace rayvec {
 
@@ -43,23 +44,56 @@ struct Timing {
   }
 };
 
+// One rank's part of a Table 1 row: the rays [first, last) of the row's side² rays (all of them in
+// one process), timed and checked by that rank alone. Trivially copyable: a rank sends it to rank 0
+// as bytes.
+struct Table1Share {
+  uint64_t first = 0, last = 0;
+  Timing original, optimized, vec_paper, vec_mt;
+  uint64_t mismatches = 0;      // rays of the share where original, optimized and vectorized `paper` disagree
+  uint64_t mt_differences = 0;  // rays of the share where `mt` picks another triangle than `paper`
+  uint64_t rays() const { return last - first; }
+};
+
+// A Table 1 row, whole: in one process its single share; across ranks the shares combined
+// (bench/paper_shares.h: each column the slowest rank's seconds, the checks summed).
 struct Table1Result {
   PaperModel model;
   uint32_t side = 0;      // image side used: rays = side²
   bool baselines = true;  // false when original/optimized were skipped
   Timing original, optimized, vec_paper, vec_mt;
-  uint64_t mismatches = 0;      // rays where original, optimized and vectorized `paper` disagree
-  uint64_t mt_differences = 0;  // rays where `mt` picks another triangle than `paper` (allowed)
+  uint64_t mismatches = 0;          // rays where original, optimized and vectorized `paper` disagree
+  uint64_t mt_differences = 0;      // rays where `mt` picks another triangle than `paper` (allowed)
+  uint64_t hits = 0;                // rays that hit a triangle (vectorized `paper`)
+  uint64_t checksum = 0;            // hits_checksum of vectorized `paper`'s hits, in input order
+  std::vector<Table1Share> shares;  // by rank; one in one process
+  // Across ranks: rays rank 0 traced again itself after the gather, and how many of them differ
+  // from the gathered hit (counted in `mismatches`).
+  uint64_t checked_rays = 0, rank_differences = 0;
+  double gather_seconds = 0;  // rank 0: receiving the other ranks' shares and hits
   uint64_t rays() const { return uint64_t(side) * side; }
   double tests() const { return double(rays()) * model.triangles; }
+  // Ray-triangle tests of the slowest rank's share when the shares are even: tests per cycle per core.
+  double tests_per_rank() const { return tests() / double(shares.empty() ? 1 : shares.size()); }
 };
 
 struct ScalingResult {
   uint32_t side = 0, triangles = 0, threads = 0;
   Intersector intersector = Intersector::mt;
-  Timing time;
+  Timing time;              // across ranks: per run the slowest rank's wall time, median over the runs
   uint64_t mismatches = 0;  // rays whose hit differs from the one-thread run
+  // Across ranks: this rank's share of the rays and its own median; rank 0 collects every rank's in
+  // rank_rays / rank_seconds (empty in one process).
+  uint64_t first = 0, last = 0;
+  double share_seconds = 0;
+  std::vector<uint64_t> rank_rays;
+  std::vector<double> rank_seconds;
 };
+
+// What a distributed scaling run borrows from its cluster to keep its ranks in step: an element-wise
+// max over the ranks, in place (every rank makes the same calls in the same order). Empty in one
+// process.
+using AllMax = std::function<void(std::vector<int64_t>&)>;
 
 // Image side for `rays` (a perfect square) divided by `divisor`, rounded to nearest, at least 1.
 uint32_t scaled_side(uint32_t rays, uint32_t divisor);
@@ -77,13 +111,23 @@ inline constexpr int kVectorizedMinRuns = 5;
 Table1Result run_table1_row(const PaperModel& model, uint32_t side, Isa isa, bool baselines,
                             double min_seconds, const Progress& progress);
 
+// The same for the rays [first, last) of the row only (one rank's share): its timings and checks, and
+// vectorized `paper`'s hits of those rays in `paper_hits` (last - first of them).
+Table1Share run_table1_share(const PaperModel& model, uint32_t side, uint64_t first, uint64_t last, Isa isa,
+                             bool baselines, double min_seconds, const Progress& progress,
+                             std::vector<Hit>& paper_hits);
+
 // Timed runs of each thread count in the scaling run at least (unless min_seconds is 0): the 50,000
 // triangle size takes ~3.5 s a run on one thread, so it used to be a single sample.
 inline constexpr int kScalingMinRuns = 3;
 
 // The vectorized brute force at 1..max_threads threads for one scaling size and intersector, the
-// thread counts timed in turns (one run each per round), medians on the wall clock.
+// thread counts timed in turns (one run each per round), medians on the wall clock. With `all_max`
+// (across ranks) each rank traces only the rays [first, last), the ranks agree each round on which
+// thread counts run again and start each run together, and a run's time is the slowest rank's.
 std::vector<ScalingResult> run_scaling(uint32_t side, uint32_t triangles, Isa isa, Intersector intersector,
-                                       int max_threads, double min_seconds, const Progress& progress);
+                                       int max_threads, double min_seconds, const Progress& progress,
+                                       uint64_t first = 0, uint64_t last = UINT64_MAX,
+                                       const AllMax& all_max = {});
 
 }  // namespace rayvec

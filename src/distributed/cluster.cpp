@@ -43,7 +43,8 @@ bool runs_across_ranks(int argc, char** argv) {
   }
   if (words.empty()) return true;
   const std::string& w = words[0];
-  return w == "render" || w == "hits" || w == "visibility";
+  return w == "render" || w == "hits" || w == "visibility" ||
+         (w == "bench" && words.size() > 1 && words[1] == "paper");
 }
 
 int Cluster::start() {

@@ -90,7 +90,7 @@ class Cluster {
 // The process's cluster.
 Cluster& cluster();
 
-// The commands that run across ranks (render, hits, visibility); any other under a
+// The commands that run across ranks (render, hits, visibility, bench paper); any other under a
 // launcher with more than one rank is refused (each rank would do it all).
 bool runs_across_ranks(int argc, char** argv);
 

@@ -25,7 +25,7 @@ declare -A allowed=(
   [render]="$core io image scene shaders render"
   [bench]="$core io gpu bench"
   [accuracy]="$core io gpu bench accuracy"
-  [distributed]="$core io image scene shaders render distributed"
+  [distributed]="$core io image scene shaders render gpu bench distributed"
   [app]="$core io image scene shaders render gpu bench accuracy distributed app"
 )
 status=0
