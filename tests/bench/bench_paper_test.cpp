@@ -42,6 +42,9 @@ TEST(BenchPaper, JsonHasSeventeenRowsAndScaling) {
   EXPECT_EQ(count(r.out, "\"threads\":1,\"seconds\""), 6);
   EXPECT_EQ(count(r.out, "\"threads\":2,\"seconds\""), 6);
   EXPECT_NE(r.out.find("\"isa\":\"scalar\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"ranks\":1,"), std::string::npos);
+  EXPECT_EQ(count(r.out, "\"checksum\":\"0x"), 17);  // of the hits, to compare with a run across ranks
+  EXPECT_EQ(count(r.out, "\"shares\":"), 0);         // per-rank data only across ranks
   EXPECT_NE(r.out.find("\"mismatches\":0}\n"), std::string::npos);
 }
 

@@ -47,10 +47,13 @@ TEST(MpiRender, MoreRanksThanTiles) {
 }
 
 TEST(MpiCluster, CommandsThatDoNotDistributeAreRefused) {
-  const auto r = test::run_mpi("info");
-  EXPECT_NE(r.status, 0);
-  EXPECT_EQ(test::count_of(r.err, "this command does not run across ranks"), 1) << r.err;
-  EXPECT_EQ(r.out, "");
+  const std::string mesh = std::string(RAYVEC_SOURCE_DIR) + "/scenes/models/cube.obj";
+  for (const std::string& command : {std::string("info"), "bench rays '" + mesh + "' --size 8x8"}) {
+    const auto r = test::run_mpi(command);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(test::count_of(r.err, "this command does not run across ranks"), 1) << r.err;
+    EXPECT_EQ(r.out, "") << command;
+  }
 }
 
 }  // namespace
