@@ -414,7 +414,11 @@ void register_bench_paper_command(Command& bench) {
               "testing: divide every image side by this and time each run once")
       .footer(
           "Scene and method: docs/benchmarks.md. Exit status 1 if versions disagree.\n"
-          "Example: rayvec bench paper --quick")
+          "Under mpirun (an MPI build) every rank times a share of each row's rays and rank 0 gathers\n"
+          "the hits, the same as one process's (docs/distributed.md).\n"
+          "Examples:\n"
+          "  rayvec bench paper --quick\n"
+          "  mpirun -np 2 rayvec bench paper --models mod2 --no-baselines --no-scaling")
       .run([] { return run(o); });
 }
 
