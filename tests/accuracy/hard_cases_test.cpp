@@ -81,10 +81,14 @@ TEST_P(HardCases, MatchOracleWithinContract) {
     const FamilyScore s = score_family(fx.truth, hits);
     SCOPED_TRACE(f.name);
     EXPECT_EQ(s.nan_outputs, 0u);
-    if (f.degenerate) EXPECT_EQ(s.false_hits, 0u) << "a zero-area triangle was hit";
+    if (f.degenerate) {
+      EXPECT_EQ(s.false_hits, 0u) << "a zero-area triangle was hit";
+    }
     for (std::size_t i = 0; i < f.rays.size(); ++i) {
       const Ray& r = f.rays[i];
-      if (!finite_ray(r)) ASSERT_EQ(hits[i].tri, -1) << "non-finite ray " << i << " hit";
+      if (!finite_ray(r)) {
+        ASSERT_EQ(hits[i].tri, -1) << "non-finite ray " << i << " hit";
+      }
     }
     if (f.crossing && watertight(p.intersector)) {
       EXPECT_GT(s.oracle_hits, f.rays.size() * 9 / 10) << "family should be made of crossing rays";
@@ -116,8 +120,12 @@ TEST(HardCaseFamilies, CrossingFamiliesHitAndDegenerateNeverHits) {
   for (const Fixture& fx : fixtures()) {
     std::size_t hits = 0;
     for (const ExactHit& h : fx.truth) hits += h.hit();
-    if (fx.family.crossing) EXPECT_EQ(hits, fx.truth.size()) << fx.family.name;
-    if (fx.family.degenerate) EXPECT_EQ(hits, 0u) << fx.family.name;
+    if (fx.family.crossing) {
+      EXPECT_EQ(hits, fx.truth.size()) << fx.family.name;
+    }
+    if (fx.family.degenerate) {
+      EXPECT_EQ(hits, 0u) << fx.family.name;
+    }
   }
 }
 
@@ -133,11 +141,14 @@ TEST(HardCaseFamilies, DeterministicAcrossThreadsAndIsas) {
         const std::vector<Hit> many = trace(*accel, fx.family.rays);  // all threads
         std::size_t isa_diffs = 0;
         for (std::size_t i = 0; i < many.size(); ++i) {
-          if (isa == best_isa())  // one thread, in order
+          if (isa == best_isa()) {  // one thread, in order
             ASSERT_EQ(accel->closest(fx.family.rays[i]).tri, many[i].tri) << fx.family.name << " ray " << i;
+          }
           isa_diffs += many[i].tri != ref[i].tri;
         }
-        if (watertight(in)) EXPECT_EQ(isa_diffs, 0u) << fx.family.name << " " << isa_name(isa);
+        if (watertight(in)) {
+          EXPECT_EQ(isa_diffs, 0u) << fx.family.name << " " << isa_name(isa);
+        }
       }
     }
 }

@@ -30,7 +30,9 @@ void check_wide(const WideBvh& bvh, const TriangleMesh& mesh, const BinaryBvh& b
       for (uint32_t s = begin; s < end; ++s) {
         const uint32_t tri = bin.order[s];
         ++seen[tri];
-        if (s > begin) EXPECT_LT(bin.order[s - 1], tri) << "ids must increase inside a leaf";
+        if (s > begin) {
+          EXPECT_LT(bin.order[s - 1], tri) << "ids must increase inside a leaf";
+        }
         for (int c = 0; c < 3; ++c) {  // the child box holds the triangle
           const Vec3f p = mesh.vertex(tri, c);
           for (int a = 0; a < 3; ++a) {

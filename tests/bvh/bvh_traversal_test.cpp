@@ -58,7 +58,9 @@ class BvhTraversal : public test::BvhCaseTest {
       ASSERT_EQ(brute.occluded(rays[i]), bvh.occluded(rays[i])) << "ray " << i;
       ASSERT_EQ(brute.occluded(rays[i], &odd_only), bvh.occluded(rays[i], &odd_only)) << "ray " << i;
     }
-    if (mesh.size() > 0 && rays.size() > 100) EXPECT_GT(hits, 0) << "the scene tests nothing";
+    if (mesh.size() > 0 && rays.size() > 100) {
+      EXPECT_GT(hits, 0) << "the scene tests nothing";
+    }
   }
 
   int direct_leaf_ = -1;  // BvhOptions::direct_leaf of expect_same's BvhAccelerator

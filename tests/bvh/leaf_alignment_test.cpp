@@ -47,8 +47,12 @@ TEST(LeafAlignment, LeavesStartOnTheStepAndKeepTheirTriangles) {
       EXPECT_EQ(covered[s], pad ? 0 : 1) << "slot " << s;
     }
     EXPECT_EQ(tree.order.size() - padding, slots_before);
-    if (step == 1) EXPECT_EQ(padding, 0u);
-    if (step == 16) EXPECT_GT(padding, 0u);  // 3000 random triangles do not tile 16-slot steps
+    if (step == 1) {
+      EXPECT_EQ(padding, 0u);
+    }
+    if (step == 16) {
+      EXPECT_GT(padding, 0u);  // 3000 random triangles do not tile 16-slot steps
+    }
   }
 }
 
@@ -95,7 +99,9 @@ TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
   const auto* nodes = static_cast<const WideNode<16>*>(bvh.tree().arrays().nodes);
   for (uint32_t n = 0; n < bvh.tree().node_count(); ++n)
     for (uint32_t ref : nodes[n].ref)
-      if (ref != kEmptyRef && (ref & kLeafFlag)) ASSERT_EQ(((ref >> 5) & (kMaxLeafBegin - 1)) % 16, 0u);
+      if (ref != kEmptyRef && (ref & kLeafFlag)) {
+        ASSERT_EQ(((ref >> 5) & (kMaxLeafBegin - 1)) % 16, 0u);
+      }
 }
 
 }  // namespace

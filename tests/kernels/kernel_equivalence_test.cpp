@@ -200,7 +200,9 @@ class KernelEquivalence : public ::testing::TestWithParam<Param> {
           << s.name << " ray " << i << ": ids " << a.tri << " vs " << b.tri << " away from any edge";
     }
     EXPECT_GT(hits, int(s.rays.size() / 10)) << s.name << ": the scene should be hit";
-    if (!s.edge_aimed) EXPECT_LE(edge_cases * 200, int(s.rays.size())) << s.name << ": too many edge cases";
+    if (!s.edge_aimed) {
+      EXPECT_LE(edge_cases * 200, int(s.rays.size())) << s.name << ": too many edge cases";
+    }
     std::printf("[ %s ] %s/%s: %d of %zu rays hit a shared edge and picked the neighbour\n", s.name,
                 isa_name(p.isa), intersector_name(p.intersector), edge_cases, s.rays.size());
   }

@@ -203,8 +203,9 @@ TEST(Whitted, StratifiedSamplesCoverEveryStratum) {
         ++rows[int(sy * n)];
       }
     }
-    if (n == 5)
+    if (n == 5) {
       for (int i = 0; i < n; ++i) EXPECT_TRUE(cols[i] == 1 && rows[i] == 1) << i;
+    }
   }
   EXPECT_EQ(sample_position(1, 2, 0, 1), (std::pair{0.5f, 0.5f}));
 }
