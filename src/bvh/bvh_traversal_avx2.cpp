@@ -20,19 +20,44 @@ constexpr Isa kThisIsa = Isa::avx2;
 #include "bvh/packet_traversal.inl"
 
 namespace {
-// The closest-hit traversal's leaves by this unit's float `mt` single-ray kernel, called directly
-// (not through the table: the traversal's ray registers are not saved around an indirect call,
-// and the call skips the table entry's finite_ray test, which the rays reaching a leaf pass:
-// bvh.cpp rejects the others); other tables through the table. Same results.
+// The any-hit leaf kernel out of line, reading the ray's lanes from memory: inlined, its registers
+// would crowd the traversal loop's.
+template <class V>
+__attribute__((noinline)) bool occluded_mt_float_leaf(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                                      const MtAnyHitRay<V>& q, const HitFilter* filter) {
+  return occluded_mt_float_lanes<V>(T, begin, end, q, filter);
+}
+
+// The traversals' leaves by this unit's float `mt` single-ray kernels, called directly (not through
+// the table: the traversal's ray registers are not saved around an indirect call, and the call
+// skips the table entry's finite_ray test, which the rays reaching a leaf pass: bvh.cpp rejects
+// the others); other tables through the table. Same results. Any hit: the ray's lanes are broadcast
+// once per ray, not at every leaf (benchmarks.md#decision-any-hit-leaf-lanes).
 struct DirectMtLeaf {
+  static RAYVEC_INLINE bool direct(const TriangleKernels& k) {
+    return k.intersector == Intersector::mt && k.isa == kThisIsa;
+  }
   static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
                                     uint32_t end, const Ray& ray, Hit& hit) {
-    if (k.intersector != Intersector::mt || k.isa != kThisIsa) return k.closest(tris, begin, end, ray, hit);
+    if (!direct(k)) return k.closest(tris, begin, end, ray, hit);
     if (ray.tmin == 0.0f)
       closest_mt_float_one<vfloat, true>(tris, begin, end, ray, hit);
     else
       closest_mt_float_one<vfloat, false>(tris, begin, end, ray, hit);
   }
+  struct AnyHit {
+    MtAnyHitRay<vfloat> q;
+    const TriangleKernels& k;
+    const Ray& ray;
+    bool is_direct;
+    RAYVEC_INLINE AnyHit(const TriangleKernels& kernels, const Ray& r)
+        : q(mt_any_hit_ray<vfloat>(r)), k(kernels), ray(r), is_direct(direct(kernels)) {}
+    RAYVEC_INLINE bool occluded(const TriangleArrays& tris, uint32_t begin, uint32_t end,
+                                const HitFilter* filter) const {
+      if (!is_direct) return k.occluded(tris, begin, end, ray, filter);
+      return occluded_mt_float_leaf<vfloat>(tris, begin, end, q, filter);
+    }
+  };
 };
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
@@ -51,14 +76,14 @@ constinit const BvhTraversal k16{Isa::avx2,
 constinit const BvhTraversal k8_direct{Isa::avx2,
                                        8,
                                        &bvh_closest<BoxLanes8, DirectMtLeaf>,
-                                       &bvh_occluded<BoxLanes8>,
+                                       &bvh_occluded<BoxLanes8, DirectMtLeaf>,
                                        &bvh_closest_packet<BoxLanes8, PacketLanes8>,
                                        8,
                                        true};
 constinit const BvhTraversal k16_direct{Isa::avx2,
                                         16,
                                         &bvh_closest<BoxLanes16, DirectMtLeaf>,
-                                        &bvh_occluded<BoxLanes16>,
+                                        &bvh_occluded<BoxLanes16, DirectMtLeaf>,
                                         &bvh_closest_packet<BoxLanes16, PacketLanes8>,
                                         8,
                                         true};

@@ -76,14 +76,25 @@ RAYVEC_INLINE RayBoxes<B, Forward> ray_boxes(const Ray& ray, float eps) {
 RAYVEC_INLINE uint32_t leaf_begin(uint32_t ref) { return (ref >> 5) & (kMaxLeafBegin - 1); }
 RAYVEC_INLINE uint32_t leaf_end(uint32_t ref) { return leaf_begin(ref) + (ref & 31u) + 1; }
 
-// How the closest-hit traversal intersects a leaf: through the kernel table (any intersector), or,
-// where an ISA unit defines such a policy, by calling its float `mt` kernel directly (DirectMtLeaf,
-// bvh_traversal_<isa>.cpp). Both give the table's results.
+// How the traversals intersect a leaf: through the kernel table (any intersector), or, where an ISA
+// unit defines such a policy, by calling its float `mt` kernel directly (DirectMtLeaf,
+// bvh_traversal_<isa>.cpp). Both give the table's results. The closest-hit traversal calls
+// Leaf::closest; the any-hit traversal makes one Leaf::AnyHit per ray (what the ray's leaf calls
+// need, formed once) and asks it about each leaf.
 struct TableLeaf {
   static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
                                     uint32_t end, const Ray& ray, Hit& hit) {
     k.closest(tris, begin, end, ray, hit);
   }
+  struct AnyHit {
+    const TriangleKernels& k;
+    const Ray& ray;
+    RAYVEC_INLINE AnyHit(const TriangleKernels& kernels, const Ray& r) : k(kernels), ray(r) {}
+    RAYVEC_INLINE bool occluded(const TriangleArrays& tris, uint32_t begin, uint32_t end,
+                                const HitFilter* filter) const {
+      return k.occluded(tris, begin, end, ray, filter);
+    }
+  };
 };
 
 template <class B, bool Forward, class Leaf>
@@ -172,7 +183,7 @@ void bvh_closest(const BvhArrays& bvh, const TriangleArrays& tris, const Triangl
   bvh_closest_from<B, Leaf>(bvh, tris, kernels, ray, hit, 0);
 }
 
-template <class B, bool Forward>
+template <class B, bool Forward, class Leaf>
 bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                        const Ray& ray, const HitFilter* filter) {
   constexpr int N = B::N;
@@ -186,6 +197,7 @@ bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const T
   uint32_t ref = 0;
   // tmin and tmax in locals: read through `ray` they are reloaded after every leaf call
   const float tmin = ray.tmin, tmax = ray.tmax;
+  const typename Leaf::AnyHit leaf(kernels, ray);
   for (;;) {
     if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];
@@ -197,16 +209,16 @@ bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const T
         continue;
       }
     } else if (ref != kEmptyRef) {
-      if (kernels.occluded(tris, leaf_begin(ref), leaf_end(ref), ray, filter)) return true;
+      if (leaf.occluded(tris, leaf_begin(ref), leaf_end(ref), filter)) return true;
     }
     if (sp == 0) return false;
     ref = stack[--sp];
   }
 }
 
-template <class B>
+template <class B, class Leaf = TableLeaf>
 bool bvh_occluded(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                   const Ray& ray, const HitFilter* filter) {
-  return ray.tmin >= 0.0f ? bvh_occluded_impl<B, true>(bvh, tris, kernels, ray, filter)
-                          : bvh_occluded_impl<B, false>(bvh, tris, kernels, ray, filter);
+  return ray.tmin >= 0.0f ? bvh_occluded_impl<B, true, Leaf>(bvh, tris, kernels, ray, filter)
+                          : bvh_occluded_impl<B, false, Leaf>(bvh, tris, kernels, ray, filter);
 }

@@ -511,19 +511,33 @@ void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end
     closest_mt_float_rays<V, false, 2>(T, begin, end, rays, hits);
 }
 
+// One ray's constants of the float `mt` any-hit kernel: its lanes, the pre-test's lower and upper
+// factors and the exact upper bound, formed once per ray — by each table call, or once per
+// traversal when a BVH unit calls the leaf kernel directly with these lanes in memory
+// (bvh_traversal_avx2.cpp; benchmarks.md#decision-any-hit-leaf-lanes).
 template <class V>
-bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
-                       const HitFilter* filter) {
-  if (!finite_ray(ray)) return false;
-  const RayLanes<V> r = broadcast_ray<V>(ray);
-  const V lo = V::broadcast(mt_lower(ray.tmin));
+struct MtAnyHitRay {
+  RayLanes<V> r;
+  V lo, hi, tlimit;
+};
+
+template <class V>
+RAYVEC_INLINE MtAnyHitRay<V> mt_any_hit_ray(const Ray& ray) {
   const float limit = next_up(ray.tmax);
-  const V tlimit = V::broadcast(limit), hi = V::broadcast(limit * kMtWiden);
+  return {broadcast_ray<V>(ray), V::broadcast(mt_lower(ray.tmin)), V::broadcast(limit * kMtWiden),
+          V::broadcast(limit)};
+}
+
+// Any hit of the ray `q` (finite origin and direction, no NaN interval) in [begin, end) accepted by
+// `filter` (may be null).
+template <class V>
+RAYVEC_INLINE bool occluded_mt_float_lanes(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                           const MtAnyHitRay<V>& q, const HitFilter* filter) {
   for (uint32_t i = first_step(begin, V::W); i < end; i += V::W) {
-    const MtNumerators<V> c = mt_numerators<V, false>(T, i, r, step_lanes<V>(i, begin, end), lo, hi);
+    const MtNumerators<V> c = mt_numerators<V, false>(T, i, q.r, step_lanes<V>(i, begin, end), q.lo, q.hi);
     if (!any(c.mask)) continue;
     const V t = c.tn / c.adet;
-    const typename V::Mask m = c.mask & (t >= r.tmin) & (t < tlimit);
+    const typename V::Mask m = c.mask & (t >= q.r.tmin) & (t < q.tlimit);
     if (!any(m)) continue;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
@@ -531,6 +545,13 @@ bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, co
         return true;
   }
   return false;
+}
+
+template <class V>
+bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
+                       const HitFilter* filter) {
+  if (!finite_ray(ray)) return false;
+  return occluded_mt_float_lanes<V>(T, begin, end, mt_any_hit_ray<V>(ray), filter);
 }
 
 template <class V, Intersector I>

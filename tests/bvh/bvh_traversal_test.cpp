@@ -75,7 +75,8 @@ TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
 // kernel called directly (AVX2 and AVX-512; the default on AVX2 and on Intel's AVX-512) — both
 // equal brute force, with tmin < 0, = 0 and > 0 (the direct call picks the kernel's tmin = 0 form
 // itself); with the `mt` intersector on AVX2 and AVX-512 they are two different traversal
-// functions, on the scalar ISA the same (table) one.
+// functions, on the scalar ISA the same (table) one. On AVX2 the any-hit traversal's leaves are
+// called directly too (with the ray's lanes formed once per ray), with and without a filter.
 TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   std::vector<Ray> rays = test::random_rays(1500, 1.5f, 21);
   for (std::size_t i = 0; i < rays.size(); ++i)
@@ -96,6 +97,10 @@ TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
     EXPECT_NE(a.traversal().closest, b.traversal().closest);
   else
     EXPECT_EQ(a.traversal().closest, b.traversal().closest);  // no direct form: both the table call
+  if (has_direct && GetParam().isa == Isa::avx2)
+    EXPECT_NE(a.traversal().occluded, b.traversal().occluded);
+  else
+    EXPECT_EQ(a.traversal().occluded, b.traversal().occluded);
   EXPECT_EQ(b.traversal().direct_leaf, has_direct);
 }
 
