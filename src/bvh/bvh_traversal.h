@@ -26,8 +26,9 @@ struct BvhTraversal {
   // tmin or tmax). Null when the ISA has no packets.
   void (*closest_packet)(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                          const Ray* rays, Hit* hits, unsigned active);
-  int packet_width;          // rays per packet (16 AVX-512, 8 AVX2, 0 none)
-  bool direct_leaf = false;  // closest() calls the float `mt` leaf kernel directly (default_direct_leaf)
+  int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
+  // closest() (on AVX2 also occluded()) calls the float `mt` leaf kernels directly (default_direct_leaf)
+  bool direct_leaf = false;
 };
 
 // The node widths an ISA has traversal code for.
@@ -49,8 +50,10 @@ int default_bvh_width(Isa isa, std::size_t triangles);
 // Whether the closest-hit traversal calls the float `mt` leaf kernel directly instead of through
 // the kernel table, on a CPU whose cpuid vendor is `vendor`: AVX2 everywhere and AVX-512 on Intel,
 // where it saves the save and reload of the traversal's ray registers around every leaf call; on
-// AMD's AVX-512 it measured slower (benchmarks.md#decision-direct-leaf-call). The scalar ISA has
-// no direct form. Same results either way.
+// AMD's AVX-512 it measured slower (benchmarks.md#decision-direct-leaf-call). On AVX2 the any-hit
+// traversal then calls its leaf kernel directly too, with the ray's lanes formed once per ray
+// (benchmarks.md#decision-any-hit-leaf-lanes). The scalar ISA has no direct form. Same results
+// either way.
 bool default_direct_leaf(Isa isa, std::string_view vendor);
 
 // The table for (isa, width), with the direct leaf call where `direct_leaf` and the ISA has one;

@@ -93,14 +93,16 @@ TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   const TriangleMesh one = test::random_soup(10, 0.1f, 23);
   const BvhAccelerator a(one, config(), table), b(one, config(), direct);
   const bool has_direct = GetParam().isa != Isa::scalar && GetParam().intersector == Intersector::mt;
-  if (has_direct)
+  if (has_direct) {
     EXPECT_NE(a.traversal().closest, b.traversal().closest);
-  else
+  } else {
     EXPECT_EQ(a.traversal().closest, b.traversal().closest);  // no direct form: both the table call
-  if (has_direct && GetParam().isa == Isa::avx2)
+  }
+  if (has_direct && GetParam().isa == Isa::avx2) {
     EXPECT_NE(a.traversal().occluded, b.traversal().occluded);
-  else
+  } else {
     EXPECT_EQ(a.traversal().occluded, b.traversal().occluded);
+  }
   EXPECT_EQ(b.traversal().direct_leaf, has_direct);
 }
 
