@@ -30,12 +30,13 @@ std::string temp_dir(const std::string& name) {
   return dir.string();
 }
 
-CommandResult run_cli(const std::string& args, const std::string& stdin_text) {
+CommandResult run_launched(const std::string& launcher, const std::string& args,
+                           const std::string& stdin_text) {
   const std::string dir = temp_dir("cli");
   const std::string in = dir + "/stdin", out = dir + "/stdout", err = dir + "/stderr";
   write_file(in, stdin_text);
   const std::string cmd =
-      std::string("'") + RAYVEC_CLI + "' " + args + " <'" + in + "' >'" + out + "' 2>'" + err + "'";
+      launcher + "'" + RAYVEC_CLI + "' " + args + " <'" + in + "' >'" + out + "' 2>'" + err + "'";
   const int raw = std::system(cmd.c_str());
   CommandResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
@@ -43,6 +44,16 @@ CommandResult run_cli(const std::string& args, const std::string& stdin_text) {
   r.err = read_file(err);
   std::filesystem::remove_all(dir);
   return r;
+}
+
+CommandResult run_cli(const std::string& args, const std::string& stdin_text) {
+  return run_launched("", args, stdin_text);
+}
+
+int count_of(const std::string& text, const std::string& needle) {
+  int n = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
 }
 
 TEST(TestSupport, RunsTheCli) {

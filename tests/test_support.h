@@ -12,6 +12,13 @@ struct CommandResult {
 // Runs the rayvec binary with `args` (a shell-quoted string) and captures stdout and stderr.
 CommandResult run_cli(const std::string& args, const std::string& stdin_text = "");
 
+// The same behind a launcher (e.g. "mpirun -np 2 "; empty: none).
+CommandResult run_launched(const std::string& launcher, const std::string& args,
+                           const std::string& stdin_text);
+
+// How many times `needle` occurs in `text`.
+int count_of(const std::string& text, const std::string& needle);
+
 // A fresh empty directory under the build tree's temp area.
 std::string temp_dir(const std::string& name);
 

@@ -9,12 +9,6 @@
 namespace rayvec {
 namespace {
 
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (std::size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 TEST(BenchPaper, TinyRunPrintsEveryModelAndNoMismatch) {
   const auto r = test::run_cli("bench paper --side-divisor 128 --threads 2");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -32,19 +26,20 @@ TEST(BenchPaper, JsonHasSeventeenRowsAndScaling) {
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_FALSE(r.out.empty());
   EXPECT_EQ(r.out.front(), '{');
-  EXPECT_EQ(count(r.out, "\"model\":"), 17);
-  EXPECT_EQ(count(r.out, "\"paper\":{"), 17);
-  EXPECT_EQ(count(r.out, "\"tests_per_cycle\":{"), 17);  // with the clock measured in the run
-  EXPECT_EQ(count(r.out, "\"clock_ghz\":{\"vectorized_paper\":0,"), 0);
-  EXPECT_EQ(count(r.out, "\"fma_per_cycle\":{"), 17);  // the throughput probe, measured too
-  EXPECT_EQ(count(r.out, "\"fma_per_cycle\":{\"vectorized_paper\":0,"), 0);
+  EXPECT_EQ(test::count_of(r.out, "\"model\":"), 17);
+  EXPECT_EQ(test::count_of(r.out, "\"paper\":{"), 17);
+  EXPECT_EQ(test::count_of(r.out, "\"tests_per_cycle\":{"), 17);  // with the clock measured in the run
+  EXPECT_EQ(test::count_of(r.out, "\"clock_ghz\":{\"vectorized_paper\":0,"), 0);
+  EXPECT_EQ(test::count_of(r.out, "\"fma_per_cycle\":{"), 17);  // the throughput probe, measured too
+  EXPECT_EQ(test::count_of(r.out, "\"fma_per_cycle\":{\"vectorized_paper\":0,"), 0);
   // 3 sizes x 2 intersectors x threads 1..2
-  EXPECT_EQ(count(r.out, "\"threads\":1,\"seconds\""), 6);
-  EXPECT_EQ(count(r.out, "\"threads\":2,\"seconds\""), 6);
+  EXPECT_EQ(test::count_of(r.out, "\"threads\":1,\"seconds\""), 6);
+  EXPECT_EQ(test::count_of(r.out, "\"threads\":2,\"seconds\""), 6);
   EXPECT_NE(r.out.find("\"isa\":\"scalar\""), std::string::npos);
   EXPECT_NE(r.out.find("\"ranks\":1,"), std::string::npos);
-  EXPECT_EQ(count(r.out, "\"checksum\":\"0x"), 17);  // of the hits, to compare with a run across ranks
-  EXPECT_EQ(count(r.out, "\"shares\":"), 0);         // per-rank data only across ranks
+  EXPECT_EQ(test::count_of(r.out, "\"checksum\":\"0x"),
+            17);                                       // of the hits, to compare with a run across ranks
+  EXPECT_EQ(test::count_of(r.out, "\"shares\":"), 0);  // per-rank data only across ranks
   EXPECT_NE(r.out.find("\"mismatches\":0}\n"), std::string::npos);
 }
 

@@ -13,27 +13,21 @@
 namespace rayvec {
 namespace {
 
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (std::size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
 TEST(CudaBench, VisibilityRowsRunAndCheck) {
   const auto r = test::run_cli("bench visibility --rings 12 --tiles 64,128 --threads 2");
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("### 266 vertices × 528 triangles (rings 12;"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| CPU brute force, scalar (the study's sequential row) | 1 |"), std::string::npos)
       << r.out;
-  EXPECT_EQ(count(r.out, "MISMATCH"), 0) << r.out;
+  EXPECT_EQ(test::count_of(r.out, "MISMATCH"), 0) << r.out;
   // scalar, and each further ISA of this CPU, on 1 and 2 threads, plus the BVH
-  EXPECT_GE(count(r.out, "| ok |"), 5) << r.out;
+  EXPECT_GE(test::count_of(r.out, "| ok |"), 5) << r.out;
   if (!gpu::cuda_built())
     EXPECT_NE(r.out.find("absent: built without CUDA"), std::string::npos) << r.out;
   else if (gpu::cuda_system().devices.empty())
     EXPECT_NE(r.out.find("absent: no CUDA device found"), std::string::npos) << r.out;
   else
-    EXPECT_EQ(count(r.out, "| GPU "), 5) << r.out;  // global, shared and soa at two tile sizes
+    EXPECT_EQ(test::count_of(r.out, "| GPU "), 5) << r.out;  // global, shared and soa at two tile sizes
 }
 
 TEST(CudaBench, BumpySphereIsClosed) {
