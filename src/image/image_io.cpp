@@ -16,6 +16,7 @@
 #include "image/exr_header.h"
 #include "image/oiio_module.h"
 #include "image/png_file.h"
+#include "image/srgb8.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 
@@ -29,16 +30,13 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// 8-bit sRGB bytes for a PNG: encode, clamp, round to nearest (no dither, so output is repeatable).
+// 8-bit sRGB bytes for a PNG: encode, clamp, round to nearest (no dither, so output is repeatable),
+// by the table of srgb8.h rather than a pow() per channel.
 std::vector<std::uint8_t> encode_png_pixels(const Image& image) {
   std::vector<std::uint8_t> bytes(std::size_t(image.width) * image.height * 3);
   const int n = image.nchannels();
   for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
-    for (int c = 0; c < 3; ++c) {
-      const float v = c < n ? image.pixels[p * n + c] : 0.0f;
-      const float e = std::isnan(v) ? 0.0f : std::clamp(srgb_encode(v), 0.0f, 1.0f);
-      bytes[p * 3 + c] = static_cast<std::uint8_t>(std::lround(e * 255.0f));
-    }
+    for (int c = 0; c < 3; ++c) bytes[p * 3 + c] = srgb8(c < n ? image.pixels[p * n + c] : 0.0f);
   return bytes;
 }
 

@@ -1,0 +1,67 @@
+#include "image/srgb8.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+
+#include "image/image_io.h"
+
+namespace rayvec {
+namespace {
+
+// thresholds[k - 1]: the smallest non-negative float whose reference byte is k or more.
+std::array<float, 255> make_thresholds() {
+  std::array<float, 255> thresholds{};
+  const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
+  for (int k = 1; k <= 255; ++k) {
+    std::uint32_t lo = 0, hi = one;  // reference(1.0f) = 255 >= k: the answer is in [lo, hi]
+    while (lo < hi) {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      if (srgb8_reference(std::bit_cast<float>(mid)) >= k)
+        hi = mid;
+      else
+        lo = mid + 1;
+    }
+    thresholds[k - 1] = std::bit_cast<float>(lo);
+  }
+  return thresholds;
+}
+
+// Below 2^-13 every value is byte 0 (byte 1 starts near 1.5e-4). From there to 1, the top 16 bits
+// of a float (exponent and 7 mantissa bits) name a bucket narrower than a byte step wherever the
+// steps are dense, so the bucket's first byte is off by at most one or two steps.
+constexpr float kSmallest = 1.0f / 8192.0f;
+constexpr std::uint32_t kFirstBucket = std::bit_cast<std::uint32_t>(kSmallest) >> 16;
+constexpr std::uint32_t kBuckets = (std::bit_cast<std::uint32_t>(1.0f) >> 16) - kFirstBucket;
+
+struct Tables {
+  std::array<float, 255> thresholds = make_thresholds();
+  std::array<std::uint8_t, kBuckets> first{};  // the byte of each bucket's smallest float
+
+  Tables() {
+    for (std::uint32_t b = 0; b < kBuckets; ++b) {
+      const float low = std::bit_cast<float>((kFirstBucket + b) << 16);
+      first[b] = static_cast<std::uint8_t>(std::upper_bound(thresholds.begin(), thresholds.end(), low) -
+                                           thresholds.begin());
+    }
+  }
+};
+
+}  // namespace
+
+std::uint8_t srgb8_reference(float linear) {
+  const float e = std::isnan(linear) ? 0.0f : std::clamp(srgb_encode(linear), 0.0f, 1.0f);
+  return static_cast<std::uint8_t>(std::lround(e * 255.0f));
+}
+
+std::uint8_t srgb8(float linear) {
+  static const Tables tables;
+  if (!(linear >= kSmallest)) return 0;  // NaN, negative, zero and tiny values
+  if (linear >= 1.0f) return 255;
+  unsigned k = tables.first[(std::bit_cast<std::uint32_t>(linear) >> 16) - kFirstBucket];
+  while (k < 255 && linear >= tables.thresholds[k]) ++k;
+  return static_cast<std::uint8_t>(k);
+}
+
+}  // namespace rayvec

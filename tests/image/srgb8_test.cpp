@@ -1,0 +1,55 @@
+#include "image/srgb8.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "image/image_io.h"
+
+namespace rayvec {
+namespace {
+
+// The table lookup gives the pow() reference's byte: on a sweep of every 64th float in [0, 1]
+// (16.6 million values), and around every place where the byte changes.
+TEST(Srgb8, EqualsThePowReferenceOnASweepOfFloats) {
+  const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
+  std::uint64_t differ = 0;
+  for (std::uint32_t bits = 0; bits <= one; bits += 64) {
+    const float v = std::bit_cast<float>(bits);
+    differ += srgb8(v) != srgb8_reference(v);
+  }
+  EXPECT_EQ(differ, 0u);
+}
+
+TEST(Srgb8, EqualsThePowReferenceAroundEveryStep) {
+  for (int k = 1; k <= 255; ++k) {
+    // where the byte becomes k, from the inverse formula, then exactly by walking up a few ulps
+    const float guess = srgb_decode((float(k) - 0.5f) / 255.0f);
+    float v = guess * (1 - 1e-5f);
+    ASSERT_LT(srgb8_reference(v), k) << "the walk must start below byte " << k;
+    while (srgb8_reference(v) < k) v = std::nextafter(v, 2.0f);
+    float around = v;
+    for (int i = 0; i < 4; ++i) around = std::nextafter(around, 0.0f);
+    for (int i = 0; i < 8; ++i, around = std::nextafter(around, 2.0f))
+      ASSERT_EQ(srgb8(around), srgb8_reference(around)) << "byte " << k << " at " << around;
+  }
+}
+
+TEST(Srgb8, SpecialValues) {
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(srgb8(std::numeric_limits<float>::quiet_NaN()), 0);
+  EXPECT_EQ(srgb8(-inf), 0);
+  EXPECT_EQ(srgb8(-1.0f), 0);
+  EXPECT_EQ(srgb8(-0.0f), 0);
+  EXPECT_EQ(srgb8(std::numeric_limits<float>::denorm_min()), 0);
+  EXPECT_EQ(srgb8(0.5f), srgb8_reference(0.5f));
+  EXPECT_EQ(srgb8(1.0f), 255);
+  EXPECT_EQ(srgb8(7.0f), 255);
+  EXPECT_EQ(srgb8(inf), 255);
+}
+
+}  // namespace
+}  // namespace rayvec
