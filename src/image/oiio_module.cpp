@@ -1,17 +1,13 @@
 // Loads librayvec_oiio.so on first use (see oiio_module_abi.h for why it is a module).
 #include "image/oiio_module.h"
 
-#include <dlfcn.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <filesystem>
 #include <mutex>
-#include <vector>
+#include <string>
 
 #include "image/image_budget.h"
 #include "image/oiio_module_abi.h"
 #include "io/input_error.h"
+#include "platform/plugin.h"
 
 namespace rayvec {
 namespace {
@@ -25,43 +21,32 @@ struct Module {
   std::string error;  // why it could not be loaded
 };
 
-std::vector<std::string> candidate_paths() {
-  std::vector<std::string> paths;
-  if (const char* env = std::getenv("RAYVEC_OIIO_MODULE"); env && *env)
-    return {env};  // the user's choice only
-  std::error_code ec;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) paths.push_back((exe.parent_path() / kOiioModuleName).string());
 #ifdef RAYVEC_OIIO_MODULE_DIR
-  paths.push_back(std::string(RAYVEC_OIIO_MODULE_DIR) + "/" + kOiioModuleName);
+constexpr const char* kBuildDir = RAYVEC_OIIO_MODULE_DIR;
+#else
+constexpr const char* kBuildDir = nullptr;
 #endif
-  return paths;
-}
 
 Module load() {
   Module m;
-  std::string tried;
-  for (const std::string& path : candidate_paths()) {
-    tried += (tried.empty() ? "" : ", ") + path;
-    if (::access(path.c_str(), F_OK) != 0) continue;
-    m.handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!m.handle) {
-      m.error = "cannot load " + path + ": " + ::dlerror();
-      return m;
-    }
-    auto abi = reinterpret_cast<RayvecOiioAbiFn>(::dlsym(m.handle, "rayvec_oiio_abi"));
-    m.open = reinterpret_cast<RayvecOiioOpenFn>(::dlsym(m.handle, "rayvec_oiio_open"));
-    m.channel = reinterpret_cast<RayvecOiioChannelFn>(::dlsym(m.handle, "rayvec_oiio_channel"));
-    m.read = reinterpret_cast<RayvecOiioReadFn>(::dlsym(m.handle, "rayvec_oiio_read"));
-    m.close = reinterpret_cast<RayvecOiioCloseFn>(::dlsym(m.handle, "rayvec_oiio_close"));
-    if (!abi || abi() != kRayvecOiioAbi || !m.open || !m.channel || !m.read || !m.close) {
-      m.error = path + " is not a rayvec " + RAYVEC_VERSION + " image module (rebuild rayvec)";
-      m.open = nullptr;
-    }
+  const Plugin p = open_plugin("RAYVEC_OIIO_MODULE", kOiioModuleName, kBuildDir, /*global=*/false);
+  m.handle = p.handle;
+  if (!p.handle) {
+    m.error = !p.error.empty()
+                  ? p.error
+                  : std::string(kOiioModuleName) + " not found (looked for " + p.tried +
+                        "); it is built beside the rayvec binary, or set RAYVEC_OIIO_MODULE to its path";
     return m;
   }
-  m.error = std::string(kOiioModuleName) + " not found (looked for " + tried +
-            "); it is built beside the rayvec binary, or set RAYVEC_OIIO_MODULE to its path";
+  auto abi = reinterpret_cast<RayvecOiioAbiFn>(plugin_symbol(p, "rayvec_oiio_abi"));
+  m.open = reinterpret_cast<RayvecOiioOpenFn>(plugin_symbol(p, "rayvec_oiio_open"));
+  m.channel = reinterpret_cast<RayvecOiioChannelFn>(plugin_symbol(p, "rayvec_oiio_channel"));
+  m.read = reinterpret_cast<RayvecOiioReadFn>(plugin_symbol(p, "rayvec_oiio_read"));
+  m.close = reinterpret_cast<RayvecOiioCloseFn>(plugin_symbol(p, "rayvec_oiio_close"));
+  if (!abi || abi() != kRayvecOiioAbi || !m.open || !m.channel || !m.read || !m.close) {
+    m.error = p.path + " is not a rayvec " + RAYVEC_VERSION + " image module (rebuild rayvec)";
+    m.open = nullptr;
+  }
   return m;
 }
 

@@ -1,0 +1,23 @@
+// open_plugin: finds and dlopens one of rayvec's modules — shared libraries that keep a heavy
+// dependency (OpenImageIO, MPI) off the start-up path of every command — the same way for each:
+// the path in an environment variable alone when it is set, else beside the running executable,
+// then in the build tree the binary came from.
+#pragma once
+#include <string>
+
+namespace rayvec {
+
+struct Plugin {
+  void* handle = nullptr;  // null: not found (error empty) or found but not loadable (error says why)
+  std::string path;        // the file opened
+  std::string error;
+  std::string tried;  // every path looked at, for a "not found" message
+};
+
+// `global`: RTLD_GLOBAL, for modules whose own plugins resolve symbols through the global scope.
+Plugin open_plugin(const char* env_var, const char* file_name, const char* build_dir, bool global);
+
+// dlsym: the symbol's address, or null.
+void* plugin_symbol(const Plugin& plugin, const char* name);
+
+}  // namespace rayvec
