@@ -73,9 +73,9 @@ bool has_temporary(const std::string& dir, const std::string& stem) {
   return false;
 }
 
-TEST(Interrupt, SigintWhileTracingRemovesTheTemporaryAndKeepsTheOldOutput) {
-  const std::string dir = test::temp_dir("interrupt_hits");
-  // 2000 triangles, brute force, a million rays: seconds of tracing with the output already open.
+// m.obj (2000 triangles) and r.csv (a million rays) in dir: seconds of brute-force tracing with the
+// output already open.
+void write_slow_hits_inputs(const std::string& dir) {
   std::string obj, rays;
   for (int i = 0; i < 2000; ++i) {
     const std::string z = std::to_string(1 + i);
@@ -88,6 +88,11 @@ TEST(Interrupt, SigintWhileTracingRemovesTheTemporaryAndKeepsTheOldOutput) {
   for (int i = 0; i < 1'000'000; ++i) rays += "0.2,0.2,0,0,0,1\n";
   test::write_file(dir + "/m.obj", obj);
   test::write_file(dir + "/r.csv", rays);
+}
+
+TEST(Interrupt, SigintWhileTracingRemovesTheTemporaryAndKeepsTheOldOutput) {
+  const std::string dir = test::temp_dir("interrupt_hits");
+  write_slow_hits_inputs(dir);
   test::write_file(dir + "/out.csv", "old\n");
   const pid_t pid = spawn_cli({"hits", "--accel", "brute", "--mesh", dir + "/m.obj", "--rays", dir + "/r.csv",
                                "-o", dir + "/out.csv"},
@@ -102,19 +107,7 @@ TEST(Interrupt, SigintWhileTracingRemovesTheTemporaryAndKeepsTheOldOutput) {
 // from a closed terminal, `timeout -s HUP`, Ctrl-\\, a pipe closed under us, ...).
 TEST(Interrupt, EveryTerminatingSignalRemovesTheTemporary) {
   const std::string dir = test::temp_dir("interrupt_signals");
-  std::string rays;
-  rays.reserve(20'000'000);
-  for (int i = 0; i < 1'000'000; ++i) rays += "0.2,0.2,0,0,0,1\n";
-  std::string obj;
-  for (int i = 0; i < 2000; ++i) {
-    const std::string z = std::to_string(1 + i);
-    obj += "v 0 0 " + z + "\nv 1 0 " + z + "\nv 0 1 " + z + "\n";
-  }
-  for (int i = 0; i < 2000; ++i)
-    obj += "f " + std::to_string(3 * i + 1) + " " + std::to_string(3 * i + 2) + " " +
-           std::to_string(3 * i + 3) + "\n";
-  test::write_file(dir + "/m.obj", obj);
-  test::write_file(dir + "/r.csv", rays);
+  write_slow_hits_inputs(dir);
   for (const int sig : {SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1, SIGUSR2}) {
     const pid_t pid = spawn_cli({"hits", "--accel", "brute", "--mesh", dir + "/m.obj", "--rays",
                                  dir + "/r.csv", "-o", dir + "/out.csv"},
