@@ -30,20 +30,31 @@ std::array<float, 255> make_thresholds() {
 
 // Below 2^-13 every value is byte 0 (byte 1 starts near 1.5e-4). From there to 1, the top 16 bits
 // of a float (exponent and 7 mantissa bits) name a bucket narrower than a byte step wherever the
-// steps are dense, so the bucket's first byte is off by at most one or two steps.
+// steps are dense, so the bucket's first byte is off by at most one step (the table's maker counts
+// them): kSteps compares that add 0 or 1 finish the lookup without a branch to mispredict — a loop
+// that stops at the right threshold mispredicts about once a pixel channel.
 constexpr float kSmallest = 1.0f / 8192.0f;
+constexpr int kSteps = 2;
 constexpr std::uint32_t kFirstBucket = std::bit_cast<std::uint32_t>(kSmallest) >> 16;
 constexpr std::uint32_t kBuckets = (std::bit_cast<std::uint32_t>(1.0f) >> 16) - kFirstBucket;
 
 struct Tables {
-  std::array<float, 255> thresholds = make_thresholds();
+  // thresholds[255] = +inf: a step from byte 255 adds 0
+  std::array<float, 256> thresholds{};
   std::array<std::uint8_t, kBuckets> first{};  // the byte of each bucket's smallest float
+  bool few_steps = true;                       // no bucket spans more than kSteps thresholds
 
   Tables() {
+    const std::array<float, 255> t = make_thresholds();
+    std::copy(t.begin(), t.end(), thresholds.begin());
+    thresholds[255] = INFINITY;
     for (std::uint32_t b = 0; b < kBuckets; ++b) {
       const float low = std::bit_cast<float>((kFirstBucket + b) << 16);
-      first[b] = static_cast<std::uint8_t>(std::upper_bound(thresholds.begin(), thresholds.end(), low) -
-                                           thresholds.begin());
+      const float next = std::bit_cast<float>((kFirstBucket + b + 1) << 16);
+      const auto k0 = std::upper_bound(t.begin(), t.end(), low),
+                 k1 = std::lower_bound(t.begin(), t.end(), next);
+      first[b] = static_cast<std::uint8_t>(k0 - t.begin());
+      few_steps = few_steps && k1 - k0 <= kSteps;
     }
   }
 };
@@ -60,7 +71,11 @@ std::uint8_t srgb8(float linear) {
   if (!(linear >= kSmallest)) return 0;  // NaN, negative, zero and tiny values
   if (linear >= 1.0f) return 255;
   unsigned k = tables.first[(std::bit_cast<std::uint32_t>(linear) >> 16) - kFirstBucket];
-  while (k < 255 && linear >= tables.thresholds[k]) ++k;
+  if (tables.few_steps) [[likely]] {
+    for (int s = 0; s < kSteps; ++s) k += linear >= tables.thresholds[k] ? 1u : 0u;
+  } else {
+    while (linear >= tables.thresholds[k]) ++k;
+  }
   return static_cast<std::uint8_t>(k);
 }
 
