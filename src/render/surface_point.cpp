@@ -1,25 +1,43 @@
 #include "render/surface_point.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 
 namespace rayvec {
 
 namespace {
 
+constexpr float kMaxFinite = 3.40282347e+38f;
+
 float max_abs(Vec3f a) { return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)}); }
 
-// The unit normal of a triangle of any size. The edges are scaled to a largest component of 1
-// before the cross product: unscaled, its squared length underflows float for triangles below
-// about 1e-10 across (and overflows above about 1e19), and normalize() then yields NaN or Inf.
-// A zero-area triangle (never hit) gets a zero vector.
+// A power of two p with m·p in [1, 4) for a positive finite m (in [2^-23, 1) when m is subnormal).
+// Scaling by it is exact, so it costs a multiply where dividing by m would cost a division.
+float inverse_scale(float m) {
+  const int exponent = std::clamp(int(std::bit_cast<uint32_t>(m) >> 23), 1, 253);
+  return std::bit_cast<float>(uint32_t(254 - exponent) << 23);
+}
+
+// `a` at unit length; a must be nonzero and finite. Scaled first (exactly) so that its squared
+// length neither underflows nor overflows float.
+Vec3f normalize_any(Vec3f a) {
+  const Vec3f b = a * inverse_scale(max_abs(a));
+  return b * (1.0f / std::sqrt(dot(b, b)));
+}
+
+// The unit normal of a triangle of any size. The edges are scaled (exactly, by powers of two) to a
+// largest component in [1, 4) before the cross product: unscaled, its squared length underflows
+// float for triangles below about 1e-10 across (and overflows above about 1e19), and normalize()
+// then yields NaN or Inf. A zero-area triangle (never hit) gets a zero vector.
 Vec3f unit_normal(Vec3f e1, Vec3f e2) {
   const float s1 = max_abs(e1), s2 = max_abs(e2);
-  if (!(s1 > 0) || !(s2 > 0)) return {0, 0, 0};
-  const Vec3f c = cross(e1 / s1, e2 / s2);
+  if (!(s1 > 0) || !(s2 > 0) || !(s1 <= kMaxFinite) || !(s2 <= kMaxFinite)) return {0, 0, 0};
+  const Vec3f c = cross(e1 * inverse_scale(s1), e2 * inverse_scale(s2));
   const float sc = max_abs(c);
   if (!(sc > 0)) return {0, 0, 0};
-  return normalize(c / sc);
+  return normalize_any(c);
 }
 
 }  // namespace
@@ -39,8 +57,8 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
     const auto& n = scene.corner_normals[t];
     const float w = 1.0f - hit.u - hit.v;
     const Vec3f ns = n[0] * w + n[1] * hit.u + n[2] * hit.v;
-    if (max_abs(ns) > 0) {
-      s.ns = normalize(ns / max_abs(ns));
+    if (max_abs(ns) > 0 && max_abs(ns) <= kMaxFinite) {
+      s.ns = normalize_any(ns);
       if (dot(s.ns, s.ng) < 0) s.ns = -s.ns;
     }
   }
