@@ -17,11 +17,12 @@ bool traceable(const Ray& r) {
          !std::isnan(r.tmax);
 }
 
-// Whether the closest-hit traversal calls the leaf kernel directly: only the float mt kernel has
-// a direct form.
+// Whether the traversals call the leaf kernel directly: only the float mt and watertight kernels
+// have a direct form.
 bool direct_leaf(const TraceConfig& config, const BvhOptions& options) {
-  if (config.intersector != Intersector::mt) return false;
-  if (options.direct_leaf < 0) return default_direct_leaf(config.isa, cpu_features().vendor);
+  if (config.intersector != Intersector::mt && config.intersector != Intersector::watertight) return false;
+  if (options.direct_leaf < 0)
+    return default_direct_leaf(config.isa, cpu_features().vendor, config.intersector);
   return options.direct_leaf != 0;
 }
 
@@ -32,7 +33,7 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
       kernels_(&triangle_kernels(config.isa, config.intersector)),
       traversal_(&bvh_traversal(config.isa,
                                 options.width ? options.width : default_bvh_width(config.isa, mesh.size()),
-                                direct_leaf(config, options))) {
+                                direct_leaf(config, options), config.intersector)) {
   SahConfig sah = options.sah;
   if (options.leaves_from_kernel && kernels_->width >= 8) {
     sah.leaf_block = uint32_t(kernels_->width);

@@ -20,9 +20,9 @@ struct BvhOptions {
   bool leaves_from_kernel = true;
   int width = 0;                           // children per node: 0 = default_bvh_width(isa, triangles)
   float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
-  // The closest-hit traversal calls the float `mt` leaf kernel directly (1) or through the kernel
-  // table (0); −1 = default_direct_leaf(isa, this CPU's vendor). Other intersectors always use
-  // the table. Same results either way.
+  // The traversals call the float `mt` or `watertight` leaf kernel directly (1) or through the
+  // kernel table (0); −1 = default_direct_leaf(isa, this CPU's vendor, intersector). Other
+  // intersectors always use the table. Same results either way.
   int direct_leaf = -1;
 };
 

@@ -25,21 +25,25 @@ int default_bvh_width(Isa isa, std::size_t triangles) {
   return default_bvh_width(isa, triangles, cpu_features().vendor);
 }
 
-bool default_direct_leaf(Isa isa, std::string_view vendor) {
-  return isa == Isa::avx2 || (isa == Isa::avx512 && vendor == "GenuineIntel");
+bool default_direct_leaf(Isa isa, std::string_view vendor, Intersector intersector) {
+  switch (intersector) {
+    case Intersector::mt: return isa == Isa::avx2 || (isa == Isa::avx512 && vendor == "GenuineIntel");
+    case Intersector::watertight: return isa != Isa::scalar;
+    default: return false;
+  }
 }
 
-const BvhTraversal& bvh_traversal(Isa isa, int width) {
-  return bvh_traversal(isa, width, default_direct_leaf(isa, cpu_features().vendor));
+const BvhTraversal& bvh_traversal(Isa isa, int width, Intersector intersector) {
+  return bvh_traversal(isa, width, default_direct_leaf(isa, cpu_features().vendor, intersector), intersector);
 }
 
-const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf) {
+const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf, Intersector intersector) {
   if (!isa_supported(isa)) throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
   const BvhTraversal* k = nullptr;
   switch (isa) {
-    case Isa::avx512: k = avx512::bvh_traversal(width, direct_leaf); break;
-    case Isa::avx2: k = avx2::bvh_traversal(width, direct_leaf); break;
-    case Isa::scalar: k = scalar::bvh_traversal(width, direct_leaf); break;
+    case Isa::avx512: k = avx512::bvh_traversal(width, direct_leaf, intersector); break;
+    case Isa::avx2: k = avx2::bvh_traversal(width, direct_leaf, intersector); break;
+    case Isa::scalar: k = scalar::bvh_traversal(width, direct_leaf, intersector); break;
   }
   if (!k)
     throw std::invalid_argument("no " + std::to_string(width) + "-wide BVH traversal for ISA " +

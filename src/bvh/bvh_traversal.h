@@ -27,7 +27,8 @@ struct BvhTraversal {
   void (*closest_packet)(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                          const Ray* rays, Hit* hits, unsigned active);
   int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
-  // closest() (on AVX2 also occluded()) calls the float `mt` leaf kernels directly (default_direct_leaf)
+  // The leaves call a float kernel of this ISA directly instead of through the kernel table
+  // (default_direct_leaf): `mt` in closest() (on AVX2 also in occluded()), `watertight` in both.
   bool direct_leaf = false;
 };
 
@@ -47,29 +48,32 @@ inline constexpr std::size_t kWideNodeTriangles = 32768;
 int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
 int default_bvh_width(Isa isa, std::size_t triangles);
 
-// Whether the closest-hit traversal calls the float `mt` leaf kernel directly instead of through
-// the kernel table, on a CPU whose cpuid vendor is `vendor`: AVX2 everywhere and AVX-512 on Intel,
-// where it saves the save and reload of the traversal's ray registers around every leaf call; on
-// AMD's AVX-512 it measured slower (benchmarks.md#decision-direct-leaf-call). On AVX2 the any-hit
-// traversal then calls its leaf kernel directly too, with the ray's lanes formed once per ray
-// (benchmarks.md#decision-any-hit-leaf-lanes). The scalar ISA has no direct form. Same results
-// either way.
-bool default_direct_leaf(Isa isa, std::string_view vendor);
+// Whether the traversals call the float leaf kernel of `intersector` directly instead of through
+// the kernel table, on a CPU whose cpuid vendor is `vendor`. `mt`: AVX2 everywhere and AVX-512 on
+// Intel, where the closest-hit traversal then saves the save and reload of its ray registers around
+// every leaf call; on AMD's AVX-512 it measured slower (benchmarks.md#decision-direct-leaf-call). On
+// AVX2 the any-hit traversal then calls its leaf kernel directly too, with the ray's lanes formed
+// once per ray (benchmarks.md#decision-any-hit-leaf-lanes). `watertight`: on AVX2 and AVX-512, both
+// traversals, the ray's shear formed once per ray (bvh/watertight_leaf.inl;
+// benchmarks.md#decision-watertight-leaf). Other intersectors and the scalar ISA: the table. Same
+// results either way.
+bool default_direct_leaf(Isa isa, std::string_view vendor, Intersector intersector = Intersector::mt);
 
-// The table for (isa, width), with the direct leaf call where `direct_leaf` and the ISA has one;
-// the ISA must be supported and the width one of bvh_widths(isa). The two-argument form uses
-// default_direct_leaf for this CPU.
-const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf);
-const BvhTraversal& bvh_traversal(Isa isa, int width);
+// The table for (isa, width), with the direct leaf calls of `intersector` where `direct_leaf` and
+// the ISA has them; the ISA must be supported and the width one of bvh_widths(isa). The form
+// without `direct_leaf` uses default_direct_leaf for this CPU.
+const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf,
+                                  Intersector intersector = Intersector::mt);
+const BvhTraversal& bvh_traversal(Isa isa, int width, Intersector intersector = Intersector::mt);
 
 namespace scalar {
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf);
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector);
 }
 namespace avx2 {
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf);
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector);
 }
 namespace avx512 {
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf);
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector);
 }
 
 }  // namespace rayvec

@@ -18,6 +18,7 @@ constexpr Isa kThisIsa = Isa::avx2;
 #include "bvh/packet_leaf.inl"
 #include "bvh/watertight_packet_leaf.inl"
 #include "bvh/packet_traversal.inl"
+#include "bvh/watertight_leaf.inl"
 
 namespace {
 // The any-hit leaf kernel out of line, reading the ray's lanes from memory: inlined, its registers
@@ -37,20 +38,25 @@ struct DirectMtLeaf {
   static RAYVEC_INLINE bool direct(const TriangleKernels& k) {
     return k.intersector == Intersector::mt && k.isa == kThisIsa;
   }
-  static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
-                                    uint32_t end, const Ray& ray, Hit& hit) {
-    if (!direct(k)) return k.closest(tris, begin, end, ray, hit);
-    if (ray.tmin == 0.0f)
-      closest_mt_float_one<vfloat, true>(tris, begin, end, ray, hit);
-    else
-      closest_mt_float_one<vfloat, false>(tris, begin, end, ray, hit);
-  }
+  struct Closest {
+    const TriangleKernels& k;
+    const Ray& ray;
+    RAYVEC_INLINE Closest(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
+        : k(kernels), ray(r) {}
+    RAYVEC_INLINE void closest(const TriangleArrays& tris, uint32_t begin, uint32_t end, Hit& hit) const {
+      if (!direct(k)) return k.closest(tris, begin, end, ray, hit);
+      if (ray.tmin == 0.0f)
+        closest_mt_float_one<vfloat, true>(tris, begin, end, ray, hit);
+      else
+        closest_mt_float_one<vfloat, false>(tris, begin, end, ray, hit);
+    }
+  };
   struct AnyHit {
     MtAnyHitRay<vfloat> q;
     const TriangleKernels& k;
     const Ray& ray;
     bool is_direct;
-    RAYVEC_INLINE AnyHit(const TriangleKernels& kernels, const Ray& r)
+    RAYVEC_INLINE AnyHit(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
         : q(mt_any_hit_ray<vfloat>(r)), k(kernels), ray(r), is_direct(direct(kernels)) {}
     RAYVEC_INLINE bool occluded(const TriangleArrays& tris, uint32_t begin, uint32_t end,
                                 const HitFilter* filter) const {
@@ -87,12 +93,28 @@ constinit const BvhTraversal k16_direct{Isa::avx2,
                                         &bvh_closest_packet<BoxLanes16, PacketLanes8>,
                                         8,
                                         true};
+constinit const BvhTraversal k8_watertight{Isa::avx2,
+                                           8,
+                                           &bvh_closest<BoxLanes8, WatertightLeaf<vfloat>>,
+                                           &bvh_occluded<BoxLanes8, WatertightLeaf<vfloat>>,
+                                           &bvh_closest_packet<BoxLanes8, PacketLanes8>,
+                                           8,
+                                           true};
+constinit const BvhTraversal k16_watertight{Isa::avx2,
+                                            16,
+                                            &bvh_closest<BoxLanes16, WatertightLeaf<vfloat>>,
+                                            &bvh_occluded<BoxLanes16, WatertightLeaf<vfloat>>,
+                                            &bvh_closest_packet<BoxLanes16, PacketLanes8>,
+                                            8,
+                                            true};
 }  // namespace
 
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf) {
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector) {
+  const bool mt = direct_leaf && intersector == Intersector::mt;
+  const bool watertight = direct_leaf && intersector == Intersector::watertight;
   switch (width) {
-    case 8: return direct_leaf ? &k8_direct : &k8;
-    case 16: return direct_leaf ? &k16_direct : &k16;
+    case 8: return mt ? &k8_direct : watertight ? &k8_watertight : &k8;
+    case 16: return mt ? &k16_direct : watertight ? &k16_watertight : &k16;
     default: return nullptr;
   }
 }

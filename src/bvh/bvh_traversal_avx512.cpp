@@ -18,6 +18,7 @@ constexpr Isa kThisIsa = Isa::avx512;
 #include "bvh/packet_leaf.inl"
 #include "bvh/watertight_packet_leaf.inl"
 #include "bvh/packet_traversal.inl"
+#include "bvh/watertight_leaf.inl"
 
 namespace {
 // The closest-hit traversal's leaves by this unit's float `mt` kernel, called directly (inlined:
@@ -25,14 +26,20 @@ namespace {
 // table is that kernel's; other tables through the table. The rays reaching a leaf are finite
 // (bvh.cpp rejects the others), so skipping the table entry's finite_ray test changes nothing.
 struct DirectMtLeaf {
-  static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
-                                    uint32_t end, const Ray& ray, Hit& hit) {
-    if (k.intersector != Intersector::mt || k.isa != kThisIsa) return k.closest(tris, begin, end, ray, hit);
-    if (ray.tmin == 0.0f)
-      closest_mt_float_rays<vfloat, true, 1>(tris, begin, end, &ray, &hit);
-    else
-      closest_mt_float_rays<vfloat, false, 1>(tris, begin, end, &ray, &hit);
-  }
+  struct Closest {
+    const TriangleKernels& k;
+    const Ray& ray;
+    RAYVEC_INLINE Closest(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
+        : k(kernels), ray(r) {}
+    RAYVEC_INLINE void closest(const TriangleArrays& tris, uint32_t begin, uint32_t end, Hit& hit) const {
+      if (k.intersector != Intersector::mt || k.isa != kThisIsa) return k.closest(tris, begin, end, ray, hit);
+      if (ray.tmin == 0.0f)
+        closest_mt_float_rays<vfloat, true, 1>(tris, begin, end, &ray, &hit);
+      else
+        closest_mt_float_rays<vfloat, false, 1>(tris, begin, end, &ray, &hit);
+    }
+  };
+  using AnyHit = TableLeaf::AnyHit;
 };
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
@@ -62,12 +69,28 @@ constinit const BvhTraversal k16_direct{Isa::avx512,
                                         &bvh_closest_packet<BoxLanes16, PacketLanes16>,
                                         16,
                                         true};
+constinit const BvhTraversal k8_watertight{Isa::avx512,
+                                           8,
+                                           &bvh_closest<BoxLanes8, WatertightLeaf<vfloat>>,
+                                           &bvh_occluded<BoxLanes8, WatertightLeaf<vfloat>>,
+                                           &bvh_closest_packet<BoxLanes8, PacketLanes16>,
+                                           16,
+                                           true};
+constinit const BvhTraversal k16_watertight{Isa::avx512,
+                                            16,
+                                            &bvh_closest<BoxLanes16, WatertightLeaf<vfloat>>,
+                                            &bvh_occluded<BoxLanes16, WatertightLeaf<vfloat>>,
+                                            &bvh_closest_packet<BoxLanes16, PacketLanes16>,
+                                            16,
+                                            true};
 }  // namespace
 
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf) {
+const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector) {
+  const bool mt = direct_leaf && intersector == Intersector::mt;
+  const bool watertight = direct_leaf && intersector == Intersector::watertight;
   switch (width) {
-    case 8: return direct_leaf ? &k8_direct : &k8;
-    case 16: return direct_leaf ? &k16_direct : &k16;
+    case 8: return mt ? &k8_direct : watertight ? &k8_watertight : &k8;
+    case 16: return mt ? &k16_direct : watertight ? &k16_watertight : &k16;
     default: return nullptr;
   }
 }

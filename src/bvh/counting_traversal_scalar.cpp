@@ -32,11 +32,13 @@ struct CountingBoxes : B {
 };
 
 struct CountingLeaf {
-  static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
-                                    uint32_t end, const Ray& ray, Hit& hit) {
-    t_cost->triangles += end - begin;
-    k.closest(tris, begin, end, ray, hit);
-  }
+  struct Closest : TableLeaf::Closest {
+    using TableLeaf::Closest::Closest;
+    RAYVEC_INLINE void closest(const TriangleArrays& tris, uint32_t begin, uint32_t end, Hit& hit) const {
+      t_cost->triangles += end - begin;
+      TableLeaf::Closest::closest(tris, begin, end, hit);
+    }
+  };
 };
 
 bool counting_occluded_leaf(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray& ray,

@@ -77,19 +77,25 @@ RAYVEC_INLINE uint32_t leaf_begin(uint32_t ref) { return (ref >> 5) & (kMaxLeafB
 RAYVEC_INLINE uint32_t leaf_end(uint32_t ref) { return leaf_begin(ref) + (ref & 31u) + 1; }
 
 // How the traversals intersect a leaf: through the kernel table (any intersector), or, where an ISA
-// unit defines such a policy, by calling its float `mt` kernel directly (DirectMtLeaf,
-// bvh_traversal_<isa>.cpp). Both give the table's results. The closest-hit traversal calls
-// Leaf::closest; the any-hit traversal makes one Leaf::AnyHit per ray (what the ray's leaf calls
-// need, formed once) and asks it about each leaf.
+// unit defines such a policy, by calling one of its float kernels directly (DirectMtLeaf in
+// bvh_traversal_<isa>.cpp, WatertightLeaf in watertight_leaf.inl). All give the table's results.
+// Each traversal makes one Leaf::Closest or Leaf::AnyHit per ray (what the ray's leaf calls need,
+// formed once) and asks it about each leaf.
 struct TableLeaf {
-  static RAYVEC_INLINE void closest(const TriangleKernels& k, const TriangleArrays& tris, uint32_t begin,
-                                    uint32_t end, const Ray& ray, Hit& hit) {
-    k.closest(tris, begin, end, ray, hit);
-  }
+  struct Closest {
+    const TriangleKernels& k;
+    const Ray& ray;
+    RAYVEC_INLINE Closest(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
+        : k(kernels), ray(r) {}
+    RAYVEC_INLINE void closest(const TriangleArrays& tris, uint32_t begin, uint32_t end, Hit& hit) const {
+      k.closest(tris, begin, end, ray, hit);
+    }
+  };
   struct AnyHit {
     const TriangleKernels& k;
     const Ray& ray;
-    RAYVEC_INLINE AnyHit(const TriangleKernels& kernels, const Ray& r) : k(kernels), ray(r) {}
+    RAYVEC_INLINE AnyHit(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
+        : k(kernels), ray(r) {}
     RAYVEC_INLINE bool occluded(const TriangleArrays& tris, uint32_t begin, uint32_t end,
                                 const HitFilter* filter) const {
       return k.occluded(tris, begin, end, ray, filter);
@@ -113,6 +119,7 @@ void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const Tr
   // whose floats may alias the ray's)
   const float tmin = ray.tmin;
   float tmax = ray.tmax < hit.t ? ray.tmax : hit.t;
+  const typename Leaf::Closest leaf(kernels, tris, ray);
   for (;;) {
     if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];
@@ -153,7 +160,7 @@ void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const Tr
         continue;
       }
     } else if (ref != kEmptyRef) {
-      Leaf::closest(kernels, tris, leaf_begin(ref), leaf_end(ref), ray, hit);
+      leaf.closest(tris, leaf_begin(ref), leaf_end(ref), hit);
       if (hit.t < tmax) tmax = hit.t;
     }
     // pop, dropping entries now behind the nearest hit
@@ -197,7 +204,7 @@ bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const T
   uint32_t ref = 0;
   // tmin and tmax in locals: read through `ray` they are reloaded after every leaf call
   const float tmin = ray.tmin, tmax = ray.tmax;
-  const typename Leaf::AnyHit leaf(kernels, ray);
+  const typename Leaf::AnyHit leaf(kernels, tris, ray);
   for (;;) {
     if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];

@@ -254,12 +254,13 @@ RAYVEC_INLINE LaneHits<V> test_watertight(const TriangleArrays& T, const Waterti
   return watertight_lanes<V>(r, WatertightRows<V>{slot_offset(i)}, NonzeroAreaLanes<V>{T, i}, active, tlimit);
 }
 
+// The closest hit among triangles [begin, end) for the ray `r` was formed from (finite): the body of
+// watertight_closest, also called by BVH leaves that form `r` once per ray (bvh/watertight_leaf.inl).
 template <class V>
-void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+RAYVEC_INLINE void watertight_closest_ray(const TriangleArrays& T, const WatertightRay<V>& r, uint32_t begin,
+                                          uint32_t end, const Ray& ray, Hit& hit) {
   using S = typename V::Scalar;
   constexpr int W = V::W;
-  if (!finite_ray(ray)) return;
-  const WatertightRay<V> r = watertight_ray<V>(T, ray);
   const float limit = ray.tmax < hit.t ? ray.tmax : hit.t;
   const S initial = next_up(S(limit));  // lanes still at `initial` have no hit
   V best_t = V::broadcast(initial);
@@ -299,12 +300,17 @@ void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, c
 }
 
 template <class V>
-bool watertight_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
-                         const HitFilter* filter) {
-  using S = typename V::Scalar;
-  if (!finite_ray(ray)) return false;
-  const WatertightRay<V> r = watertight_ray<V>(T, ray);
-  const V tlimit = V::broadcast(next_up(S(ray.tmax)));
+void watertight_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+  if (!finite_ray(ray)) return;
+  watertight_closest_ray<V>(T, watertight_ray<V>(T, ray), begin, end, ray, hit);
+}
+
+// Whether any triangle of [begin, end) accepted by `filter` is hit before tlimit = next_up(tmax) by
+// the ray `r` was formed from (finite): the body of watertight_occluded, also called by BVH leaves
+// that form `r` once per ray.
+template <class V>
+RAYVEC_INLINE bool watertight_occluded_ray(const TriangleArrays& T, const WatertightRay<V>& r, V tlimit,
+                                           uint32_t begin, uint32_t end, const HitFilter* filter) {
   for (uint32_t i = first_step(begin, V::W); i < end; i += V::W) {
     const typename V::Mask m = test_watertight<V>(T, r, i, step_lanes<V>(i, begin, end), tlimit).mask;
     if (!any(m)) continue;
@@ -314,6 +320,21 @@ bool watertight_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, 
         return true;
   }
   return false;
+}
+
+// The any-hit limit of `ray`: t < next_up(tmax) is t <= tmax.
+template <class V>
+RAYVEC_INLINE V watertight_any_limit(const Ray& ray) {
+  using S = typename V::Scalar;
+  return V::broadcast(next_up(S(ray.tmax)));
+}
+
+template <class V>
+bool watertight_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
+                         const HitFilter* filter) {
+  if (!finite_ray(ray)) return false;
+  return watertight_occluded_ray<V>(T, watertight_ray<V>(T, ray), watertight_any_limit<V>(ray), begin, end,
+                                    filter);
 }
 
 template <class V, Intersector I>

@@ -71,12 +71,13 @@ TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
   expect_same(test::random_soup(500, 0.6f, 3), test::random_rays(1000, 1.2f, 4));
 }
 
-// The closest-hit traversal's two leaf calls — through the kernel table, and the float `mt`
-// kernel called directly (AVX2 and AVX-512; the default on AVX2 and on Intel's AVX-512) — both
-// equal brute force, with tmin < 0, = 0 and > 0 (the direct call picks the kernel's tmin = 0 form
-// itself); with the `mt` intersector on AVX2 and AVX-512 they are two different traversal
-// functions, on the scalar ISA the same (table) one. On AVX2 the any-hit traversal's leaves are
-// called directly too (with the ray's lanes formed once per ray), with and without a filter.
+// The traversals' two leaf calls — through the kernel table, and the float kernel called directly
+// (AVX2 and AVX-512) — both equal brute force, with tmin < 0, = 0 and > 0 (the direct `mt` call
+// picks the kernel's tmin = 0 form itself). With the `mt` intersector on AVX2 and AVX-512 the
+// closest-hit traversals are two different functions, on the scalar ISA the same (table) one; on
+// AVX2 the any-hit traversal's leaves are called directly too (with the ray's lanes formed once per
+// ray), with and without a filter. With `watertight` on AVX2 and AVX-512 both traversals call the
+// kernel directly, the ray's shear formed once per ray.
 TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   std::vector<Ray> rays = test::random_rays(1500, 1.5f, 21);
   for (std::size_t i = 0; i < rays.size(); ++i)
@@ -92,13 +93,15 @@ TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   direct.direct_leaf = 1;
   const TriangleMesh one = test::random_soup(10, 0.1f, 23);
   const BvhAccelerator a(one, config(), table), b(one, config(), direct);
-  const bool has_direct = GetParam().isa != Isa::scalar && GetParam().intersector == Intersector::mt;
+  const Intersector in = GetParam().intersector;
+  const bool watertight = GetParam().isa != Isa::scalar && in == Intersector::watertight;
+  const bool has_direct = GetParam().isa != Isa::scalar && (in == Intersector::mt || watertight);
   if (has_direct) {
     EXPECT_NE(a.traversal().closest, b.traversal().closest);
   } else {
     EXPECT_EQ(a.traversal().closest, b.traversal().closest);  // no direct form: both the table call
   }
-  if (has_direct && GetParam().isa == Isa::avx2) {
+  if (has_direct && (GetParam().isa == Isa::avx2 || watertight)) {
     EXPECT_NE(a.traversal().occluded, b.traversal().occluded);
   } else {
     EXPECT_EQ(a.traversal().occluded, b.traversal().occluded);
@@ -113,6 +116,16 @@ TEST(BvhTraversalRule, DirectLeafCallOnAvx2AndIntelAvx512) {
   for (const char* vendor : {"GenuineIntel", "AuthenticAMD", ""}) {
     EXPECT_TRUE(default_direct_leaf(Isa::avx2, vendor));
     EXPECT_FALSE(default_direct_leaf(Isa::scalar, vendor));
+  }
+}
+
+TEST(BvhTraversalRule, WatertightLeavesCalledDirectlyOnAvx2AndAvx512) {
+  for (const char* vendor : {"GenuineIntel", "AuthenticAMD", ""}) {
+    EXPECT_TRUE(default_direct_leaf(Isa::avx512, vendor, Intersector::watertight));
+    EXPECT_TRUE(default_direct_leaf(Isa::avx2, vendor, Intersector::watertight));
+    EXPECT_FALSE(default_direct_leaf(Isa::scalar, vendor, Intersector::watertight));
+    for (const Intersector other : {Intersector::paper, Intersector::mt64, Intersector::watertight64})
+      EXPECT_FALSE(default_direct_leaf(Isa::avx512, vendor, other));
   }
 }
 
