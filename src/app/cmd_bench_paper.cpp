@@ -114,7 +114,9 @@ void print_table1(const std::vector<Table1Result>& rows, uint32_t divisor, int r
       "vectorized columns: median of at least %d runs; GHz: the core clock measured before "
       "each vec-mt run (dependent-add chain), FMA/c: vector FMAs per cycle a throughput probe "
       "got before each vec-mt run (2.00 = an uncontended core with two FMA pipes; lower = the "
-      "vector pipes are shared, e.g. with a VM neighbour, and t/c drops with it), t/c vm: "
+      "vector pipes are shared, e.g. with a VM neighbour, or, when only --isa avx512 reads about 1 "
+      "and --isa avx2 still 2, the core runs 512-bit operations as two 256-bit halves; t/c drops "
+      "with it), t/c vm: "
       "vec-mt ray-triangle tests per cycle.\n",
       kVectorizedMinRuns);
 }

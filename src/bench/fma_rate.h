@@ -3,8 +3,9 @@
 // chain) barely moves. A latency chain cannot see a neighbour sharing the vector pipes; a
 // throughput loop can. So `bench paper` measures both and prints FMAs per cycle next to the
 // kernel's tests per cycle: about 2 on an uncontended core with two FMA pipes, less while the pipes
-// are shared. A slow run with FMA/c still at 2 was slowed by something else — caches or memory, not
-// the pipes (benchmarks.md#decision-clock-probes).
+// are shared — or, for 512-bit vectors only, on a core that executes them as two 256-bit halves
+// (then the AVX2 probe still reads 2). A slow run with FMA/c still at 2 was slowed by something
+// else — caches or memory, not the pipes (benchmarks.md#decision-clock-probes).
 #pragma once
 
 #include "platform/isa.h"
