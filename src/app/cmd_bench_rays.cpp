@@ -86,10 +86,11 @@ int run(const Options& o) {
   parse_size(o.size, width, height);
   if (o.repeats < 1) throw InputError("--repeats: must be at least 1");
   if (o.builds < 1 || o.builds > 100) throw InputError("--builds: must be 1 to 100");
-  if (o.vs_embree && !embree_available())
-    throw InputError(
-        "--vs-embree: this rayvec was built without Embree 3 (install libembree-dev "
-        "and re-run CMake)");
+  if (o.vs_embree && !embree_available()) {
+    // a build without Embree is the build's choice; a build with it whose module is missing is broken
+    if (embree_built()) throw RuntimeError("--vs-embree: " + embree_unavailable_reason());
+    throw InputError("--vs-embree: " + embree_unavailable_reason());
+  }
   const TraceConfig config = resolve_trace_options(o.trace);
   const int threads = omp_get_max_threads();
   if (o.width != 0) {

@@ -30,10 +30,17 @@ std::unique_ptr<RayTracer> make_accelerator_tracer(const Accelerator& accel);
 
 // Embree 3 with RTC_BUILD_QUALITY_HIGH, `threads` build threads, its ISA capped at `max_isa`
 // (Embree's names: "sse2", "avx2", "avx512"; see embree_max_isa): rtcIntersect1, rtcIntersect16,
-// rtcOccluded1. Null when rayvec was built without Embree. build_seconds receives the time of
-// rtcCommitScene.
+// rtcOccluded1, run inside librayvec_embree.so (loaded on first use). Null when rayvec was built
+// without Embree; throws RuntimeError when the module cannot be loaded or Embree fails.
+// build_seconds receives the time of rtcCommitScene.
 std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads, const char* max_isa,
                                               double& build_seconds);
+// Whether make_embree_tracer can run; if not, why (built without Embree, module not found or
+// not loadable), else empty.
 bool embree_available();
+std::string embree_unavailable_reason();
+// Whether this rayvec was built with Embree (then a missing module is a runtime failure, not a
+// choice of the build).
+bool embree_built();
 
 }  // namespace rayvec

@@ -10,6 +10,7 @@
 #include <regex>
 #include <string>
 
+#include "bench/ray_tracer.h"
 #include "image/image.h"
 #include "image/image_io.h"
 #include "test_support.h"
@@ -29,13 +30,13 @@ std::string shell_output(const std::string& cmd) {
 }
 
 // Every library `ldd` lists for the binary must be one of these (the closure of what rayvec links:
-// libc, C++ runtime, OpenMP, GMP, tinyobjloader, OpenEXR with Imath and zlib, libpng, and the
-// optional Embree rival with TBB). A new entry costs every command its loading time: measure it
-// with scripts/startup_cost.sh and load it on demand if it is heavy, before adding it here.
+// libc, C++ runtime, OpenMP, GMP, tinyobjloader, OpenEXR with Imath and zlib, libpng). A new entry
+// costs every command its loading time: measure it with scripts/startup_cost.sh and load it on
+// demand if it is heavy, before adding it here — as OpenImageIO (librayvec_oiio.so), MPI
+// (librayvec_mpi.so) and the Embree rival with TBB (librayvec_embree.so) are.
 const std::regex kAllowed(
     "(linux-vdso|ld-linux-x86-64|libc|libm|libstdc\\+\\+|libgcc_s|libgomp|libgmp|libtinyobjloader|"
     "libOpenEXR-3_1|libOpenEXRCore-3_1|libIex-3_1|libIlmThread-3_1|libImath-3_1|libz|libpng16|"
-    "libembree3|libtbb|"
     // the sanitizer runtimes and GMP's C++ layer, present in the instrumented build only
     "libasan|libubsan|libgmpxx)\\.so.*");
 
@@ -59,8 +60,8 @@ TEST(Startup, BinaryNeedsOnlyLightSharedLibraries) {
   EXPECT_EQ(ldd.find("OpenImageIO"), std::string::npos) << ldd;
 }
 
-// True when the dynamic loader opened librayvec_oiio.so while `rayvec ARGS` ran.
-bool module_loaded_by(const std::string& args, int* status) {
+// True when the dynamic loader opened `module` (librayvec_oiio.so by default) while `rayvec ARGS` ran.
+bool module_loaded_by(const std::string& args, int* status, const std::string& module = "librayvec_oiio.so") {
   const std::string dir = test::temp_dir("ld_debug");
   ::setenv("LD_DEBUG", "files", 1);
   ::setenv("LD_DEBUG_OUTPUT", (dir + "/ld").c_str(), 1);
@@ -69,7 +70,7 @@ bool module_loaded_by(const std::string& args, int* status) {
   ::unsetenv("LD_DEBUG_OUTPUT");
   bool loaded = false;
   for (const auto& f : std::filesystem::directory_iterator(dir))
-    loaded = loaded || test::read_file(f.path().string()).find("librayvec_oiio.so") != std::string::npos;
+    loaded = loaded || test::read_file(f.path().string()).find(module) != std::string::npos;
   std::filesystem::remove_all(dir);
   return loaded;
 }
@@ -98,6 +99,32 @@ TEST(Startup, MissingModuleIsARuntimeErrorNamingIt) {
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("RAYVEC_OIIO_MODULE"), std::string::npos) << r.err;
+}
+
+// Embree (and TBB) are loaded by `bench rays --vs-embree` alone, through librayvec_embree.so.
+TEST(Startup, EmbreeModuleLoadsOnlyForTheEmbreeComparison) {
+  if (!embree_built()) GTEST_SKIP() << "rayvec was built without Embree (libembree-dev)";
+  const std::string dir = test::temp_dir("embree_module_use");
+  test::write_file(dir + "/t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string bench = "bench rays '" + dir + "/t.obj' --size 8x8 --repeats 1 --builds 1 --threads 1";
+  int status = -1;
+  EXPECT_FALSE(module_loaded_by(bench, &status, "librayvec_embree.so"));
+  EXPECT_EQ(status, 0);
+  EXPECT_FALSE(module_loaded_by("--help", &status, "libembree3"));
+  EXPECT_TRUE(module_loaded_by(bench + " --vs-embree", &status, "librayvec_embree.so"));
+  EXPECT_EQ(status, 0);
+}
+
+TEST(Startup, MissingEmbreeModuleIsARuntimeErrorNamingIt) {
+  if (!embree_built()) GTEST_SKIP() << "rayvec was built without Embree (libembree-dev)";
+  const std::string dir = test::temp_dir("embree_module_missing");
+  test::write_file(dir + "/t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  ::setenv("RAYVEC_EMBREE_MODULE", (dir + "/nowhere/librayvec_embree.so").c_str(), 1);
+  const auto r = test::run_cli("bench rays '" + dir + "/t.obj' --size 8x8 --repeats 1 --vs-embree");
+  ::unsetenv("RAYVEC_EMBREE_MODULE");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("--vs-embree: librayvec_embree.so"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("RAYVEC_EMBREE_MODULE"), std::string::npos) << r.err;
 }
 
 }  // namespace

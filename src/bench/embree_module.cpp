@@ -1,4 +1,5 @@
-// The Embree 3 rival of `rayvec bench rays --vs-embree` — the only file that includes Embree.
+// librayvec_embree.so: the Embree 3 rival of `rayvec bench rays --vs-embree` behind the C interface
+// of embree_module_abi.h — the only file that includes Embree.
 // Scene: one RTC_GEOMETRY_TYPE_TRIANGLE with the mesh's shared vertices, RTC_BUILD_QUALITY_HIGH
 // (Embree's SAH builder with spatial splits), a device with `threads` build threads whose ISA is
 // capped at rayvec's (config max_isa), so `--isa avx2` compares against Embree's AVX2 code. Queries:
@@ -7,54 +8,52 @@
 #include <embree3/rtcore.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstring>
+#include <new>
 #include <stdexcept>
 #include <string>
 
-#include "bench/ray_tracer.h"
-#include "geometry/triangle_mesh.h"
-#include "io/input_error.h"
+#include "bench/embree_module_abi.h"
 #include "platform/stopwatch.h"
 
 namespace rayvec {
 namespace {
 
-class EmbreeTracer final : public RayTracer {
+class EmbreeScene {
  public:
-  EmbreeTracer(const TriangleMesh& mesh, int threads, const char* max_isa, double& build_seconds) {
+  EmbreeScene(const float* vertices, std::size_t vertex_count, const uint32_t* triangles,
+              std::size_t triangle_count, int threads, const char* max_isa, double& build_seconds) {
     const std::string config = "threads=" + std::to_string(threads > 0 ? threads : 0) + ",max_isa=" + max_isa;
     device_ = rtcNewDevice(config.c_str());
-    if (!device_) throw RuntimeError("Embree: rtcNewDevice failed");
+    if (!device_) throw std::runtime_error("rtcNewDevice failed");
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
     // +1 float of slack: Embree may load 16 bytes at the last vertex
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                          3 * sizeof(float), mesh.positions.size() + 1));
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-      v[3 * i] = mesh.positions[i].x;
-      v[3 * i + 1] = mesh.positions[i].y;
-      v[3 * i + 2] = mesh.positions[i].z;
-    }
+                                                          3 * sizeof(float), vertex_count + 1));
+    std::memcpy(v, vertices, vertex_count * 3 * sizeof(float));
     auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.size()));
-    std::memcpy(idx, mesh.triangles.data(), mesh.size() * 3 * sizeof(unsigned));
+        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count));
+    std::memcpy(idx, triangles, triangle_count * 3 * sizeof(unsigned));
     rtcCommitGeometry(geom);
     rtcAttachGeometry(scene_, geom);
     rtcReleaseGeometry(geom);
     const auto t0 = std::chrono::steady_clock::now();
     rtcCommitScene(scene_);
     build_seconds = seconds_since(t0);
-    if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) throw RuntimeError("Embree: scene build failed");
+    if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) {
+      release();
+      throw std::runtime_error("scene build failed");
+    }
   }
-  ~EmbreeTracer() override {
-    rtcReleaseScene(scene_);
-    rtcReleaseDevice(device_);
-  }
-  std::string name() const override { return "embree"; }
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+  ~EmbreeScene() { release(); }
 
-  void closest(const Ray* rays, Hit* hits, std::size_t n) const override {
+  void closest(const Ray* rays, Hit* hits, std::size_t n) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     for (std::size_t i = 0; i < n; ++i) {
@@ -70,7 +69,7 @@ class EmbreeTracer final : public RayTracer {
     }
   }
 
-  void closest_packet(const Ray* rays, Hit* hits, std::size_t n) const override {
+  void closest_packet(const Ray* rays, Hit* hits, std::size_t n) const {
     alignas(64) RTCRayHit16 p;
     alignas(64) int valid[16];
     for (std::size_t k = 0; k < 16; ++k) {
@@ -100,7 +99,7 @@ class EmbreeTracer final : public RayTracer {
                     : Hit{p.ray.tfar[k], p.hit.u[k], p.hit.v[k], int32_t(p.hit.primID[k])};
   }
 
-  void occluded(const Ray* rays, uint8_t* out, std::size_t n) const override {
+  void occluded(const Ray* rays, uint8_t* out, std::size_t n) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     for (std::size_t i = 0; i < n; ++i) {
@@ -113,17 +112,54 @@ class EmbreeTracer final : public RayTracer {
   }
 
  private:
+  void release() {
+    if (scene_) rtcReleaseScene(scene_);
+    if (device_) rtcReleaseDevice(device_);
+    scene_ = nullptr;
+    device_ = nullptr;
+  }
+
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
 };
 
+const EmbreeScene& scene_of(void* handle) { return *static_cast<const EmbreeScene*>(handle); }
+
 }  // namespace
+}  // namespace rayvec
 
-bool embree_available() { return true; }
+extern "C" {
 
-std::unique_ptr<RayTracer> make_embree_tracer(const TriangleMesh& mesh, int threads, const char* max_isa,
-                                              double& build_seconds) {
-  return std::make_unique<EmbreeTracer>(mesh, threads, max_isa, build_seconds);
+__attribute__((visibility("default"))) int rayvec_embree_abi() { return kRayvecEmbreeAbi; }
+
+__attribute__((visibility("default"))) void* rayvec_embree_build(
+    const float* vertices, std::size_t vertex_count, const uint32_t* triangles, std::size_t triangle_count,
+    int threads, const char* max_isa, double* build_seconds, char* error, std::size_t error_size) {
+  try {
+    return new rayvec::EmbreeScene(vertices, vertex_count, triangles, triangle_count, threads, max_isa,
+                                   *build_seconds);
+  } catch (const std::exception& e) {  // std::bad_alloc too
+    std::snprintf(error, error_size, "Embree: %s", e.what());
+    return nullptr;
+  }
 }
 
-}  // namespace rayvec
+__attribute__((visibility("default"))) void rayvec_embree_closest(void* scene, const rayvec::Ray* rays,
+                                                                  rayvec::Hit* hits, std::size_t n) {
+  rayvec::scene_of(scene).closest(rays, hits, n);
+}
+
+__attribute__((visibility("default"))) void rayvec_embree_packet(void* scene, const rayvec::Ray* rays,
+                                                                 rayvec::Hit* hits, std::size_t n) {
+  rayvec::scene_of(scene).closest_packet(rays, hits, n);
+}
+
+__attribute__((visibility("default"))) void rayvec_embree_occluded(void* scene, const rayvec::Ray* rays,
+                                                                   uint8_t* out, std::size_t n) {
+  rayvec::scene_of(scene).occluded(rays, out, n);
+}
+
+__attribute__((visibility("default"))) void rayvec_embree_release(void* scene) {
+  delete static_cast<rayvec::EmbreeScene*>(scene);
+}
+}
