@@ -14,7 +14,8 @@ namespace {
 
 // Room for `count` elements in one allocation when `v` has less (at least doubling, so adding many
 // small objects stays linear), advised for huge pages: growing a million-triangle scene's arrays
-// element by element copied each one about once more and faulted in twice the pages.
+// element by element copied each one about once more and faulted in twice the pages. (Room only:
+// an OBJ's normals may cover some of its triangles, and pages never written are never faulted in.)
 template <typename T>
 void make_room(std::vector<T>& v, std::size_t count) {
   if (v.capacity() >= count) return;
@@ -71,10 +72,26 @@ void Scene::add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material) {
   mesh.add_triangle(a, b, c);
   triangle_material.push_back(material);
   triangle_object.push_back(static_cast<int32_t>(object_count_));
-  corner_normals.push_back({});
-  corner_uv.push_back({});
-  has_normals.push_back(0);
-  has_uv.push_back(0);
+  normals_of.push_back(kNoCorners);
+  uv_of.push_back(kNoCorners);
+}
+
+void Scene::set_normals(std::size_t t, const std::array<Vec3f, 3>& normals) {
+  if (normals_of[t] == kNoCorners) {
+    normals_of[t] = static_cast<uint32_t>(corner_normals.size());
+    corner_normals.push_back(normals);
+  } else {
+    corner_normals[normals_of[t]] = normals;
+  }
+}
+
+void Scene::set_uv(std::size_t t, const std::array<std::array<float, 2>, 3>& uv) {
+  if (uv_of[t] == kNoCorners) {
+    uv_of[t] = static_cast<uint32_t>(corner_uv.size());
+    corner_uv.push_back(uv);
+  } else {
+    corner_uv[uv_of[t]] = uv;
+  }
 }
 
 void Scene::add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override) {
@@ -90,10 +107,11 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
   make_room(mesh.triangles, tris);
   make_room(triangle_material, tris);
   make_room(triangle_object, tris);
-  make_room(corner_normals, tris);
-  make_room(corner_uv, tris);
-  make_room(has_normals, tris);
-  make_room(has_uv, tris);
+  make_room(normals_of, tris);
+  make_room(uv_of, tris);
+  if (!model.normals.empty())
+    make_room(corner_normals, corner_normals.size() + model.triangle_normals.size());
+  if (!model.texcoords.empty()) make_room(corner_uv, corner_uv.size() + model.triangle_texcoords.size());
   for (std::size_t t = 0; t < model.mesh.size(); ++t) {
     int32_t material = t < model.triangle_material.size() ? model.triangle_material[t] : -1;
     if (material >= 0 && material < int32_t(model.materials.size())) {
@@ -115,15 +133,17 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
     if (t < model.triangle_normals.size()) {
       const auto& idx = model.triangle_normals[t];
       if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0) {
-        for (int k = 0; k < 3; ++k) corner_normals[tri][k] = map.normal(model.normals[idx[corner[k]]]);
-        has_normals[tri] = 1;
+        std::array<Vec3f, 3> n;
+        for (int k = 0; k < 3; ++k) n[k] = map.normal(model.normals[idx[corner[k]]]);
+        set_normals(tri, n);
       }
     }
     if (t < model.triangle_texcoords.size()) {
       const auto& idx = model.triangle_texcoords[t];
       if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0) {
-        for (int k = 0; k < 3; ++k) corner_uv[tri][k] = model.texcoords[idx[corner[k]]];
-        has_uv[tri] = 1;
+        std::array<std::array<float, 2>, 3> uv;
+        for (int k = 0; k < 3; ++k) uv[k] = model.texcoords[idx[corner[k]]];
+        set_uv(tri, uv);
       }
     }
   }

@@ -64,10 +64,14 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<int32_t> material_texture;  // per material, index into textures or -1
   std::vector<Image> textures;            // linear RGB (map_Kd)
-  // Per-triangle corner attributes; has_normals/has_uv false where the OBJ gives none.
+  // Corner attributes where the OBJ gives them: triangle t's vertex normals are
+  // corner_normals[normals_of[t]] and its texture coordinates corner_uv[uv_of[t]], kNoCorners
+  // where it gives none (normals() and uv() read them). Most meshes give neither, and a slot of
+  // zeros per triangle cost a million-triangle scene 60 MB to allocate and clear.
+  static constexpr uint32_t kNoCorners = 0xffffffffu;
+  std::vector<uint32_t> normals_of, uv_of;
   std::vector<std::array<Vec3f, 3>> corner_normals;
   std::vector<std::array<std::array<float, 2>, 3>> corner_uv;
-  std::vector<uint8_t> has_normals, has_uv;
   std::vector<std::string> warnings;
   // The camera and lights are rayvec's defaults (default_view.h), not the file's: a bare OBJ, or a
   // scene JSON without "camera" (default_camera) or without "lights" (default_light).
@@ -81,6 +85,16 @@ struct Scene {
   void add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override = {});
   // Appends one triangle with material `material` (index) — for scenes built in code.
   void add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material);
+  // Gives triangle t vertex normals / texture coordinates (corners in the triangle's order).
+  void set_normals(std::size_t t, const std::array<Vec3f, 3>& normals);
+  void set_uv(std::size_t t, const std::array<std::array<float, 2>, 3>& uv);
+  // Triangle t's vertex normals / texture coordinates, or null where it has none.
+  const std::array<Vec3f, 3>* normals(std::size_t t) const {
+    return normals_of[t] == kNoCorners ? nullptr : &corner_normals[normals_of[t]];
+  }
+  const std::array<std::array<float, 2>, 3>* uv(std::size_t t) const {
+    return uv_of[t] == kNoCorners ? nullptr : &corner_uv[uv_of[t]];
+  }
   int32_t add_material(const Material& m);
 
   // World-space bounds of the mesh (empty scene: a unit box at the origin).

@@ -39,8 +39,7 @@ TEST(TinyScale, ShadingNormalIsAFiniteUnitVectorForAnyVertexNormalLength) {
     Scene scene;
     const int32_t mat = scene.add_material(Material{});
     scene.add_triangle(Vec3f{-1, -1, 0}, Vec3f{1, -1, 0}, Vec3f{0, 1, 0}, mat);
-    scene.has_normals[0] = 1;
-    scene.corner_normals[0] = {Vec3f{0, 0, length}, Vec3f{0, 0, length}, Vec3f{0, 0, length}};
+    scene.set_normals(0, {Vec3f{0, 0, length}, Vec3f{0, 0, length}, Vec3f{0, 0, length}});
     const Ray ray{{0, 0, -1}, {0, 0, 1}, 0, 1e30f};
     Hit hit;
     hit.tri = 0;

@@ -158,8 +158,8 @@ TEST(Whitted, IndexMatchedGlassTransmitsTheBackgroundFilteredByTf) {
   s.mesh = {};
   s.triangle_material.clear();
   s.triangle_object.clear();
-  s.has_normals.clear();
-  s.has_uv.clear();
+  s.normals_of.clear();
+  s.uv_of.clear();
   s.corner_normals.clear();
   s.corner_uv.clear();
   Material glass;
