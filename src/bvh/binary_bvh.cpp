@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -11,6 +12,7 @@
 
 #include "platform/large_buffer.h"
 #include "geometry/triangle_mesh.h"
+#include "simd/float4_sse.h"
 
 namespace rayvec {
 namespace {
@@ -30,7 +32,7 @@ struct alignas(32) Prim {
   float lo[3];
   uint32_t id;
   float hi[3];
-  float pad;
+  float pad;  // 0, so lane 3 of the binning's 4-lane centroid stays 0
   float centroid(int a) const { return (lo[a] + hi[a]) * 0.5f; }
 };
 
@@ -61,9 +63,39 @@ struct BinBox {
   float half_area() const { return box().half_area(); }
 };
 
-// Bins of all three axes over one range of primitives.
+// Bins of all three axes over one range of primitives: each bin's box as lo[4], hi[4] (lane 3
+// unused) so a primitive grows it with one 4-lane min and max, and its primitive count.
 struct Bins {
-  BinBox bin[3][kMaxBins];
+  alignas(16) float box[3][kMaxBins][8];
+  uint32_t count[3][kMaxBins];
+  // empties the first `bins` bins of each axis (the others are never read)
+  void clear(int bins) {
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < bins; ++k) {
+        sse::Float4::broadcast(kInf).store(box[a][k]);
+        sse::Float4::broadcast(-kInf).store(box[a][k] + 4);
+        count[a][k] = 0;
+      }
+  }
+  BinBox at(int a, int k) const {
+    const float* b = box[a][k];
+    BinBox r;
+    for (int i = 0; i < 3; ++i) {
+      r.lo[i] = b[i];
+      r.hi[i] = b[4 + i];
+    }
+    r.count = count[a][k];
+    return r;
+  }
+  void grow(const Bins& o, int bins) {
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < bins; ++k) {
+        float* b = box[a][k];
+        sse::vmin(sse::Float4::load(o.box[a][k]), sse::Float4::load(b)).store(b);
+        sse::vmax(sse::Float4::load(o.box[a][k] + 4), sse::Float4::load(b + 4)).store(b + 4);
+        count[a][k] += o.count[a][k];
+      }
+  }
 };
 
 struct Split {
@@ -73,11 +105,14 @@ struct Split {
   BBox left, right;
 };
 
-// Bin of a centroid coordinate; NaN and out-of-range values are clamped to the end bins.
+// Bin of a centroid coordinate; NaN and out-of-range values are clamped to the end bins. Written as
+// the x86 max and min (NaN gives the second operand) so that Builder::bin_range's 4-lane form gives
+// the same bin.
 int bin_of(float c, float lo, float scale, int bins) {
-  const float f = (c - lo) * scale;
-  if (!(f > 0.0f)) return 0;
-  return f >= float(bins - 1) ? bins - 1 : int(f);
+  float f = (c - lo) * scale;
+  f = f > 0.0f ? f : 0.0f;
+  const float last = float(bins - 1);
+  return int(f < last ? f : last);
 }
 
 class Builder {
@@ -138,10 +173,29 @@ class Builder {
     return n >= threshold && depth < 30 && (1 << depth) < threads_;
   }
 
+  // All three axes of a primitive at once in 4 lanes: centroid, bin (bin_of's arithmetic, lane by
+  // lane, so the partition's scalar bin_of agrees), then one min and max per axis's bin. Lane 3
+  // holds the id's bits in `lo` and is masked to 0 before any arithmetic (as a float an id is
+  // usually a denormal, slow to compute with); the bins' lane 3 is never read.
   void bin_range(uint32_t begin, uint32_t end, const Range& r, Bins& out) const {
+    using sse::Float4;
+    out.clear(bins_);
+    const Float4 rlo = Float4::set(r.lo[0], r.lo[1], r.lo[2], 0.0f);
+    const Float4 rscale = Float4::set(r.scale[0], r.scale[1], r.scale[2], 0.0f);
+    const Float4 half = Float4::broadcast(0.5f), zero = Float4::broadcast(0.0f);
+    const Float4 last = Float4::broadcast(float(bins_ - 1));
     for (uint32_t i = begin; i < end; ++i) {
       const Prim& p = prims_[i];
-      for (int a = 0; a < 3; ++a) out.bin[a][bin_of(p.centroid(a), r.lo[a], r.scale[a], bins_)].grow(p);
+      const Float4 lo = Float4::load(p.lo), hi = Float4::load(p.hi);
+      const Float4 c = (lo.xyz() + hi) * half;
+      int32_t k[4];
+      vmin(vmax((c - rlo) * rscale, zero), last).store_truncated(k);
+      for (int a = 0; a < 3; ++a) {
+        float* b = out.box[a][k[a]];
+        vmin(lo, Float4::load(b)).store(b);
+        vmax(hi, Float4::load(b + 4)).store(b + 4);
+        ++out.count[a][k[a]];
+      }
     }
   }
 
@@ -162,40 +216,51 @@ class Builder {
         bin_range(b, e, r, part[c]);
       }
 #pragma omp taskwait
-      for (int a = 0; a < 3; ++a)
-        for (int k = 0; k < bins_; ++k)
-          for (int c = 0; c < kBinningChunks; ++c) bins.bin[a][k].grow(part[c].bin[a][k]);
+      bins = part[0];
+      for (int c = 1; c < kBinningChunks; ++c) bins.grow(part[c], bins_);
     } else {
       bin_range(begin, end, r, bins);
     }
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
       if (!(ext[axis] > 0.0f)) continue;
-      const BinBox* bin = bins.bin[axis];
-      // sweep from the right, then from the left
+      // The sweeps visit only the occupied bins: an empty bin changes neither side, so a split
+      // after it costs the same as the one before it and is never strictly cheaper — skipping it
+      // keeps the choice (the first cheapest bin), and a small range's sweep no longer walks (and
+      // branches on) the many empty bins. used[0, m): the occupied bins in increasing order,
+      // gathered without branches.
+      const uint32_t* count = bins.count[axis];
+      int used[kMaxBins];
+      int m = 0;
+      for (int k = 0; k < bins_; ++k) {
+        used[m] = k;
+        m += count[k] != 0 ? 1 : 0;
+      }
+      // right_*[j]: bins used[j, m)
       float right_area[kMaxBins];
       uint32_t right_count[kMaxBins];
       BinBox acc;
-      for (int k = bins_ - 1; k > 0; --k) {
-        acc.grow(bin[k]);
-        right_area[k] = acc.half_area();
-        right_count[k] = acc.count;
+      for (int j = m - 1; j > 0; --j) {
+        acc.grow(bins.at(axis, used[j]));
+        right_area[j] = acc.half_area();
+        right_count[j] = acc.count;
       }
       BinBox left;
-      for (int k = 0; k < bins_ - 1; ++k) {
-        left.grow(bin[k]);
-        const uint32_t nr = right_count[k + 1];
-        if (left.count == 0 || nr == 0) continue;
-        const float cost = left.half_area() * leaf_cost(left.count) + right_area[k + 1] * leaf_cost(nr);
+      int best_j = -1;
+      for (int j = 0; j + 1 < m; ++j) {  // both sides non-empty
+        left.grow(bins.at(axis, used[j]));
+        const float cost =
+            left.half_area() * leaf_cost(left.count) + right_area[j + 1] * leaf_cost(right_count[j + 1]);
         if (cost < best.cost) {
           best.cost = cost;
           best.axis = axis;
-          best.bin = k;
+          best.bin = used[j];
+          best_j = j;
         }
       }
-      if (best.axis == axis) {  // boxes of the chosen split
+      if (best_j >= 0) {  // boxes of the chosen split
         BinBox l, rr;
-        for (int k = 0; k < bins_; ++k) (k <= best.bin ? l : rr).grow(bin[k]);
+        for (int j = 0; j < m; ++j) (j <= best_j ? l : rr).grow(bins.at(axis, used[j]));
         best.left = l.box();
         best.right = rr.box();
       }
@@ -203,7 +268,12 @@ class Builder {
     return best;
   }
 
-  float leaf_cost(uint32_t n) const { return float((n + config_.leaf_block - 1) / config_.leaf_block); }
+  // ceil(n / leaf_block), by a shift for the usual power-of-two block (a division on every step of
+  // the sweep was a visible part of the build)
+  float leaf_cost(uint32_t n) const {
+    const uint32_t b = config_.leaf_block;
+    return float(leaf_shift_ >= 0 ? (n + b - 1) >> leaf_shift_ : (n + b - 1) / b);
+  }
 
   void make_leaf(uint32_t node, uint32_t begin, uint32_t end, const BBox& box) {
     for (uint32_t i = begin; i < end; ++i) out_.order[i] = prims_[i].id;
@@ -354,6 +424,10 @@ class Builder {
   const SahConfig& config_;
   const int threads_ = omp_get_max_threads();
   const int bins_;
+  // log2(leaf_block) when it is a power of two, else -1
+  const int leaf_shift_ = config_.leaf_block != 0 && std::has_single_bit(config_.leaf_block)
+                              ? std::countr_zero(config_.leaf_block)
+                              : -1;
   BinaryBvh& out_;
   // primitive records and the partition buffer (ranges of kParallelPartition or more): LargeBuffers,
   // uninitialized; the constructor's parallel loop writes every record

@@ -1,0 +1,84 @@
+// Float4: four float lanes in one SSE register, for baseline code (SSE2 is part of x86-64, so no
+// ISA unit or run-time dispatch is needed). The BVH builder bins a triangle's box (three coordinates
+// and a spare lane) with it. Include only from units compiled with the baseline flags: an out-of-line
+// copy compiled with AVX flags in an ISA unit could be shared with baseline callers. Without SSE2
+// (another architecture) the same operations run lane by lane.
+#pragma once
+#include <cstdint>
+
+#include "platform/attributes.h"
+
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
+namespace rayvec::sse {
+
+#if defined(__SSE2__)
+
+struct Float4 {
+  __m128 v;
+  static RAYVEC_INLINE Float4 load(const float* p) { return {_mm_loadu_ps(p)}; }
+  static RAYVEC_INLINE Float4 set(float x, float y, float z, float w) { return {_mm_setr_ps(x, y, z, w)}; }
+  static RAYVEC_INLINE Float4 broadcast(float x) { return {_mm_set1_ps(x)}; }
+  RAYVEC_INLINE void store(float* p) const { _mm_storeu_ps(p, v); }
+  // Lanes 0-2 kept, lane 3 set to +0 (a spare lane that may hold other bits, e.g. an id).
+  RAYVEC_INLINE Float4 xyz() const {
+    return {_mm_and_ps(v, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)))};
+  }
+  // Truncation toward zero of each lane (lanes out of the int32 range give INT32_MIN).
+  RAYVEC_INLINE void store_truncated(int32_t* p) const {
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm_cvttps_epi32(v));
+  }
+};
+
+RAYVEC_INLINE Float4 operator+(Float4 a, Float4 b) { return {_mm_add_ps(a.v, b.v)}; }
+RAYVEC_INLINE Float4 operator-(Float4 a, Float4 b) { return {_mm_sub_ps(a.v, b.v)}; }
+RAYVEC_INLINE Float4 operator*(Float4 a, Float4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+// Min and max by the x86 rule: a < b ? a : b (and a > b ? a : b), so where either is NaN the result
+// is b — pass the accumulator as b to keep it when the new value is NaN.
+RAYVEC_INLINE Float4 vmin(Float4 a, Float4 b) { return {_mm_min_ps(a.v, b.v)}; }
+RAYVEC_INLINE Float4 vmax(Float4 a, Float4 b) { return {_mm_max_ps(a.v, b.v)}; }
+
+#else
+
+struct Float4 {
+  float v[4];
+  static RAYVEC_INLINE Float4 load(const float* p) { return {{p[0], p[1], p[2], p[3]}}; }
+  static RAYVEC_INLINE Float4 set(float x, float y, float z, float w) { return {{x, y, z, w}}; }
+  static RAYVEC_INLINE Float4 broadcast(float x) { return {{x, x, x, x}}; }
+  RAYVEC_INLINE void store(float* p) const {
+    for (int i = 0; i < 4; ++i) p[i] = v[i];
+  }
+  RAYVEC_INLINE Float4 xyz() const { return {{v[0], v[1], v[2], 0.0f}}; }
+  RAYVEC_INLINE void store_truncated(int32_t* p) const {
+    for (int i = 0; i < 4; ++i)
+      p[i] = v[i] > -2147483648.0f && v[i] < 2147483648.0f ? int32_t(v[i]) : INT32_MIN;
+  }
+};
+
+template <class Op>
+RAYVEC_INLINE Float4 lanewise(Float4 a, Float4 b, Op op) {
+  Float4 r;
+  for (int i = 0; i < 4; ++i) r.v[i] = op(a.v[i], b.v[i]);
+  return r;
+}
+RAYVEC_INLINE Float4 operator+(Float4 a, Float4 b) {
+  return lanewise(a, b, [](float x, float y) { return x + y; });
+}
+RAYVEC_INLINE Float4 operator-(Float4 a, Float4 b) {
+  return lanewise(a, b, [](float x, float y) { return x - y; });
+}
+RAYVEC_INLINE Float4 operator*(Float4 a, Float4 b) {
+  return lanewise(a, b, [](float x, float y) { return x * y; });
+}
+RAYVEC_INLINE Float4 vmin(Float4 a, Float4 b) {
+  return lanewise(a, b, [](float x, float y) { return x < y ? x : y; });
+}
+RAYVEC_INLINE Float4 vmax(Float4 a, Float4 b) {
+  return lanewise(a, b, [](float x, float y) { return x > y ? x : y; });
+}
+
+#endif
+
+}  // namespace rayvec::sse
