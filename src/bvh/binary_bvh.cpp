@@ -318,11 +318,15 @@ class Builder {
   // was the largest serial step of the build; other ranges keep the in-place std::partition, which
   // moves less memory. The order inside each side does not matter: every later decision depends
   // only on the set of primitives in a range.
+  // Serial ranges also return the centroid bounds of both sides in `cbox` (the children's binning
+  // needs them, and the partition visits every centroid anyway); chunked ranges leave `cbox` empty
+  // and report false in `have_cbox`.
   template <class F>
-  uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left) {
+  uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left, BBox (&cbox)[2],
+                           bool& have_cbox) {
     Prim* data = prims_;
-    if (!chunked(end - begin, depth, kParallelPartition) || !scratch_)
-      return uint32_t(std::partition(data + begin, data + end, goes_left) - data);
+    have_cbox = !chunked(end - begin, depth, kParallelPartition) || !scratch_;
+    if (have_cbox) return partition_serial(begin, end, goes_left, cbox);
     constexpr int C = kBinningChunks;
     const uint32_t step = (end - begin + C - 1) / C;
     uint32_t lefts[C] = {};
@@ -368,13 +372,48 @@ class Builder {
     return begin + total_left;
   }
 
-  void build(uint32_t node, uint32_t begin, uint32_t end, const BBox& box, int depth) {
+  // Each primitive is tested once: [begin, i) goes left, [j, end) goes right, and [i, j) is not yet
+  // tested. The centroid bounds of both sides grow on the way (x86 min/max with the accumulator
+  // second, so a NaN centroid is ignored as in range_box).
+  template <class F>
+  uint32_t partition_serial(uint32_t begin, uint32_t end, const F& goes_left, BBox (&cbox)[2]) {
+    using sse::Float4;
+    const Float4 half = Float4::broadcast(0.5f);
+    Float4 lo[2] = {Float4::broadcast(kInf), Float4::broadcast(kInf)};
+    Float4 hi[2] = {Float4::broadcast(-kInf), Float4::broadcast(-kInf)};
+    uint32_t i = begin, j = end;
+    while (i < j) {
+      Prim& p = prims_[i];
+      const Float4 c = (Float4::load(p.lo).xyz() + Float4::load(p.hi)) * half;
+      const int side = goes_left(p) ? 0 : 1;
+      lo[side] = vmin(c, lo[side]);
+      hi[side] = vmax(c, hi[side]);
+      if (side == 0) {
+        ++i;
+      } else {
+        --j;
+        std::swap(p, prims_[j]);
+      }
+    }
+    for (int s = 0; s < 2; ++s) {
+      float l[4], h[4];
+      lo[s].store(l);
+      hi[s].store(h);
+      cbox[s] = BBox{{l[0], l[1], l[2]}, {h[0], h[1], h[2]}};
+    }
+    return i;
+  }
+
+  void build(uint32_t node, uint32_t begin, uint32_t end, const BBox& box, int depth,
+             const BBox* cbox_known = nullptr) {
     const uint32_t n = end - begin;
     if (n <= 1) return make_leaf(node, begin, end, box);
-    const BBox cbox = range_box(begin, end, true, depth);
+    const BBox cbox = cbox_known ? *cbox_known : range_box(begin, end, true, depth);
 
     uint32_t mid = begin;
     BBox left_box, right_box;
+    BBox child_cbox[2];
+    bool have_child_cbox = false;
     const Split split = depth < config_.max_sah_depth ? find_split(begin, end, cbox, depth) : Split{};
     if (split.axis >= 0) {
       const float area = box.half_area();
@@ -383,9 +422,12 @@ class Builder {
       const int axis = split.axis;
       const float lo = cbox.lo[axis], scale = float(bins_) / cbox.extent()[axis];
       const int bins = bins_, last_left = split.bin;
-      mid = partition_range(begin, end, depth, [axis, lo, scale, bins, last_left](const Prim& p) {
-        return bin_of(p.centroid(axis), lo, scale, bins) <= last_left;
-      });
+      mid = partition_range(
+          begin, end, depth,
+          [axis, lo, scale, bins, last_left](const Prim& p) {
+            return bin_of(p.centroid(axis), lo, scale, bins) <= last_left;
+          },
+          child_cbox, have_child_cbox);
       left_box = split.left;
       right_box = split.right;
     } else if (n <= config_.max_leaf) {
@@ -403,6 +445,7 @@ class Builder {
       });
       left_box = range_box(begin, mid, false, depth);
       right_box = range_box(mid, end, false, depth);
+      have_child_cbox = false;
     }
     const uint32_t left = next_node_.fetch_add(2);
     new (nodes_.get() + node) BinaryNode{box, left, 0};
@@ -410,14 +453,14 @@ class Builder {
       // both halves as tasks: a taskwait waits for every child of the current task, so a right
       // half built in place would, at its first binning taskwait, also wait for (and usually run)
       // the whole left half — which serialised the build
-#pragma omp task firstprivate(left, begin, mid, left_box, depth)
-      build(left, begin, mid, left_box, depth + 1);
-#pragma omp task firstprivate(left, mid, end, right_box, depth)
-      build(left + 1, mid, end, right_box, depth + 1);
+#pragma omp task firstprivate(left, begin, mid, left_box, depth, child_cbox, have_child_cbox)
+      build(left, begin, mid, left_box, depth + 1, have_child_cbox ? &child_cbox[0] : nullptr);
+#pragma omp task firstprivate(left, mid, end, right_box, depth, child_cbox, have_child_cbox)
+      build(left + 1, mid, end, right_box, depth + 1, have_child_cbox ? &child_cbox[1] : nullptr);
 #pragma omp taskwait
     } else {
-      build(left, begin, mid, left_box, depth + 1);
-      build(left + 1, mid, end, right_box, depth + 1);
+      build(left, begin, mid, left_box, depth + 1, have_child_cbox ? &child_cbox[0] : nullptr);
+      build(left + 1, mid, end, right_box, depth + 1, have_child_cbox ? &child_cbox[1] : nullptr);
     }
   }
 
