@@ -408,6 +408,12 @@ class Builder {
              const BBox* cbox_known = nullptr) {
     const uint32_t n = end - begin;
     if (n <= 1) return make_leaf(node, begin, end, box);
+    // A range whose leaf costs no more than one node visit (the smallest ranges) is a leaf whatever
+    // its split costs: the test below is leaf_cost(n) <= traversal_cost + cost / area, and with a
+    // finite area the children's areas are finite and no larger, so the second term is >= 0 (or 0
+    // when area is 0). Infinite or NaN areas take the full path.
+    if (n <= config_.max_leaf && leaf_cost(n) <= config_.traversal_cost && box.half_area() < kInf)
+      return make_leaf(node, begin, end, box);
     const BBox cbox = cbox_known ? *cbox_known : range_box(begin, end, true, depth);
 
     uint32_t mid = begin;
