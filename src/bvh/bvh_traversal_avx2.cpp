@@ -38,11 +38,8 @@ struct DirectMtLeaf {
   static RAYVEC_INLINE bool direct(const TriangleKernels& k) {
     return k.intersector == Intersector::mt && k.isa == kThisIsa;
   }
-  struct Closest {
-    const TriangleKernels& k;
-    const Ray& ray;
-    RAYVEC_INLINE Closest(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
-        : k(kernels), ray(r) {}
+  struct Closest : LeafRay {
+    using LeafRay::LeafRay;
     RAYVEC_INLINE void closest(const TriangleArrays& tris, uint32_t begin, uint32_t end, Hit& hit) const {
       if (!direct(k)) return k.closest(tris, begin, end, ray, hit);
       if (ray.tmin == 0.0f)

@@ -26,11 +26,8 @@ namespace {
 // table is that kernel's; other tables through the table. The rays reaching a leaf are finite
 // (bvh.cpp rejects the others), so skipping the table entry's finite_ray test changes nothing.
 struct DirectMtLeaf {
-  struct Closest {
-    const TriangleKernels& k;
-    const Ray& ray;
-    RAYVEC_INLINE Closest(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
-        : k(kernels), ray(r) {}
+  struct Closest : LeafRay {
+    using LeafRay::LeafRay;
     RAYVEC_INLINE void closest(const TriangleArrays& tris, uint32_t begin, uint32_t end, Hit& hit) const {
       if (k.intersector != Intersector::mt || k.isa != kThisIsa) return k.closest(tris, begin, end, ray, hit);
       if (ray.tmin == 0.0f)

@@ -81,21 +81,23 @@ RAYVEC_INLINE uint32_t leaf_end(uint32_t ref) { return leaf_begin(ref) + (ref & 
 // bvh_traversal_<isa>.cpp, WatertightLeaf in watertight_leaf.inl). All give the table's results.
 // Each traversal makes one Leaf::Closest or Leaf::AnyHit per ray (what the ray's leaf calls need,
 // formed once) and asks it about each leaf.
+// What a leaf policy that needs only the kernel table and the ray keeps per ray.
+struct LeafRay {
+  const TriangleKernels& k;
+  const Ray& ray;
+  RAYVEC_INLINE LeafRay(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
+      : k(kernels), ray(r) {}
+};
+
 struct TableLeaf {
-  struct Closest {
-    const TriangleKernels& k;
-    const Ray& ray;
-    RAYVEC_INLINE Closest(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
-        : k(kernels), ray(r) {}
+  struct Closest : LeafRay {
+    using LeafRay::LeafRay;
     RAYVEC_INLINE void closest(const TriangleArrays& tris, uint32_t begin, uint32_t end, Hit& hit) const {
       k.closest(tris, begin, end, ray, hit);
     }
   };
-  struct AnyHit {
-    const TriangleKernels& k;
-    const Ray& ray;
-    RAYVEC_INLINE AnyHit(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
-        : k(kernels), ray(r) {}
+  struct AnyHit : LeafRay {
+    using LeafRay::LeafRay;
     RAYVEC_INLINE bool occluded(const TriangleArrays& tris, uint32_t begin, uint32_t end,
                                 const HitFilter* filter) const {
       return k.occluded(tris, begin, end, ray, filter);

@@ -14,19 +14,24 @@
 namespace rayvec {
 namespace {
 
+// Triangle 0 of `scene` hit at (u, v) = (0.25, 0.5) by a ray along +z.
+SurfacePoint point_seen_along_z(const Scene& scene) {
+  const Ray ray{{0, 0, -1}, {0, 0, 1}, 0, 1e30f};
+  Hit hit;
+  hit.tri = 0;
+  hit.t = 1;
+  hit.u = 0.25f;
+  hit.v = 0.5f;
+  return surface_point(scene, ray, hit);
+}
+
 TEST(TinyScale, GeometricNormalIsAFiniteUnitVectorAtEveryScale) {
   // subnormal vertices (1e-40) to edges near float's largest value (1e37)
   for (float scale : {1e-40f, 1e-30f, 1e-20f, 1e-12f, 1e-6f, 1.0f, 1e10f, 1e30f, 1e37f}) {
     Scene scene;
     const int32_t mat = scene.add_material(Material{});
     scene.add_triangle(Vec3f{-1, -1, 0} * scale, Vec3f{1, -1, 0} * scale, Vec3f{0, 1, 0} * scale, mat);
-    const Ray ray{{0, 0, -1}, {0, 0, 1}, 0, 1e30f};
-    Hit hit;
-    hit.tri = 0;
-    hit.t = 1;
-    hit.u = 0.25f;
-    hit.v = 0.5f;
-    const SurfacePoint s = surface_point(scene, ray, hit);
+    const SurfacePoint s = point_seen_along_z(scene);
     for (const Vec3f n : {s.ng, s.ns}) {
       EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)) << scale;
       EXPECT_NEAR(n.z, -1.0f, 1e-6f) << scale << ": the normal faces the incoming ray";
@@ -40,13 +45,7 @@ TEST(TinyScale, ShadingNormalIsAFiniteUnitVectorForAnyVertexNormalLength) {
     const int32_t mat = scene.add_material(Material{});
     scene.add_triangle(Vec3f{-1, -1, 0}, Vec3f{1, -1, 0}, Vec3f{0, 1, 0}, mat);
     scene.set_normals(0, {Vec3f{0, 0, length}, Vec3f{0, 0, length}, Vec3f{0, 0, length}});
-    const Ray ray{{0, 0, -1}, {0, 0, 1}, 0, 1e30f};
-    Hit hit;
-    hit.tri = 0;
-    hit.t = 1;
-    hit.u = 0.25f;
-    hit.v = 0.5f;
-    const Vec3f n = surface_point(scene, ray, hit).ns;
+    const Vec3f n = point_seen_along_z(scene).ns;
     EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)) << length;
     EXPECT_NEAR(n.z, -1.0f, 1e-6f) << length << ": the shading normal is unit length and faces the ray";
   }
