@@ -34,10 +34,9 @@ Module load() {
   Module m;
   const Plugin p = open_plugin("RAYVEC_EMBREE_MODULE", kEmbreeModuleName, kBuildDir, /*global=*/false);
   if (!p.handle) {
-    m.error = !p.error.empty()
-                  ? p.error
-                  : std::string(kEmbreeModuleName) + " not found (looked for " + p.tried +
-                        "); it is built beside the rayvec binary, or set RAYVEC_EMBREE_MODULE to its path";
+    m.error =
+        plugin_problem(p, kEmbreeModuleName,
+                       "; it is built beside the rayvec binary, or set RAYVEC_EMBREE_MODULE to its path");
     return m;
   }
   const auto abi = reinterpret_cast<RayvecEmbreeAbiFn>(plugin_symbol(p, "rayvec_embree_abi"));

@@ -26,10 +26,9 @@ MpiModule load_mpi_module() {
   // global scope.
   const Plugin p = open_plugin("RAYVEC_MPI_MODULE", kMpiModuleName, kBuildDir, /*global=*/true);
   if (!p.handle) {
-    m.error = !p.error.empty() ? p.error
-                               : std::string(kMpiModuleName) + " not found (looked for " + p.tried +
-                                     "): this rayvec was built without MPI; configure with -DRAYVEC_MPI=ON "
-                                     "(docs/distributed.md), or run it without a launcher";
+    m.error = plugin_problem(p, kMpiModuleName,
+                             ": this rayvec was built without MPI; configure with -DRAYVEC_MPI=ON "
+                             "(docs/distributed.md), or run it without a launcher");
     return m;
   }
   RayvecMpiAbiFn abi = nullptr;

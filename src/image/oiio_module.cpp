@@ -32,10 +32,8 @@ Module load() {
   const Plugin p = open_plugin("RAYVEC_OIIO_MODULE", kOiioModuleName, kBuildDir, /*global=*/false);
   m.handle = p.handle;
   if (!p.handle) {
-    m.error = !p.error.empty()
-                  ? p.error
-                  : std::string(kOiioModuleName) + " not found (looked for " + p.tried +
-                        "); it is built beside the rayvec binary, or set RAYVEC_OIIO_MODULE to its path";
+    m.error = plugin_problem(p, kOiioModuleName,
+                             "; it is built beside the rayvec binary, or set RAYVEC_OIIO_MODULE to its path");
     return m;
   }
   auto abi = reinterpret_cast<RayvecOiioAbiFn>(plugin_symbol(p, "rayvec_oiio_abi"));

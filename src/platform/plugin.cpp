@@ -22,6 +22,11 @@ std::vector<std::string> candidate_paths(const char* env_var, const char* file_n
 
 }  // namespace
 
+std::string plugin_problem(const Plugin& p, const char* file_name, const std::string& hint) {
+  if (!p.error.empty()) return p.error;
+  return std::string(file_name) + " not found (looked for " + p.tried + ")" + hint;
+}
+
 Plugin open_plugin(const char* env_var, const char* file_name, const char* build_dir, bool global) {
   Plugin p;
   for (const std::string& path : candidate_paths(env_var, file_name, build_dir)) {

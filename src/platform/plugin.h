@@ -17,6 +17,10 @@ struct Plugin {
 // `global`: RTLD_GLOBAL, for modules whose own plugins resolve symbols through the global scope.
 Plugin open_plugin(const char* env_var, const char* file_name, const char* build_dir, bool global);
 
+// Why `p`, opened by open_plugin(…, file_name, …), did not load: dlopen's error, or
+// "FILE not found (looked for …)" followed by `hint` (how to get or point to the module).
+std::string plugin_problem(const Plugin& p, const char* file_name, const std::string& hint);
+
 // dlsym: the symbol's address, or null.
 void* plugin_symbol(const Plugin& plugin, const char* name);
 
