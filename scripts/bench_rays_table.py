@@ -44,11 +44,14 @@ def main():
     print("|---|---:|---:|---|---:|---:|---:|---:|")
     builds = []
     speedups = {}
+    fma = []
     for mesh in a.meshes:
         by_threads = {t: [] for t in a.threads}
         for _ in range(a.runs):  # interleaved: every round runs each thread count once
             for t in a.threads:
                 by_threads[t].append(run(a.binary, mesh, t, a.size, a.isa, a.builds))
+                if "fma_per_cycle" in by_threads[t][-1]:
+                    fma.append(by_threads[t][-1]["fma_per_cycle"])
         name = os.path.basename(mesh)
         if 1 in by_threads and 2 in by_threads:
             pairs = list(zip(by_threads[1], by_threads[2]))
@@ -78,6 +81,10 @@ def main():
         print(f"- {name}: 2-thread build speedup (median of per-round ratios) rayvec {ours:.2f}x, "
               f"Embree {theirs:.2f}x")
     print(f"- isa {builds[0][6]}, cpu {builds[0][7]}, median of {a.runs} runs of the command")
+    if fma:  # absent from the output of rayvec binaries older than the probe
+        v2, v512 = med(f["avx2"] for f in fma), med(f["avx512"] for f in fma)
+        half = " (512-bit operations at half rate on this host)" if 0 < v512 < 0.7 * v2 else ""
+        print(f"- vector FMAs per cycle (median over runs): avx2 {v2:.2f}, avx512 {v512:.2f}{half}")
 
 
 if __name__ == "__main__":

@@ -13,6 +13,8 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/trace_options.h"
+#include "bench/cpu_clock.h"
+#include "bench/fma_rate.h"
 #include "bench/median.h"
 #include "bench/rays_bench.h"
 #include "io/input_error.h"
@@ -79,6 +81,23 @@ void print_row(const char* name, const SetResult& r, const SetResult* rival, uin
                 rival->mrays_per_s() > 0 ? r.mrays_per_s() / rival->mrays_per_s() : 0.0,
                 (unsigned long long)mismatches);
   std::printf("\n");
+}
+
+// Vector FMAs per cycle at each vector width this CPU has (0 where it has none): the numbers that
+// tell a host running 512-bit operations at half rate (about 1 at avx512, 2 at avx2: the same 16
+// lanes a cycle, so a 16-wide kernel keeps no edge over an 8-wide one) from one whose vector pipes
+// are shared (both low). Printed with every run so that ratios quoted from it carry their host.
+struct FmaRates {
+  double avx2 = 0, avx512 = 0;
+};
+FmaRates measure_fma_rates() {
+  const double ghz = measure_clock_ghz();
+  FmaRates r;
+  if (ghz > 0) {
+    r.avx2 = measure_fma_per_ns(Isa::avx2) / ghz;
+    r.avx512 = measure_fma_per_ns(Isa::avx512) / ghz;
+  }
+  return r;
 }
 
 int run(const Options& o) {
@@ -167,18 +186,19 @@ int run(const Options& o) {
   const TracerRun& run = runs[0];
   const TracerRun rival_run = embree ? runs[1] : TracerRun{};
   const Mismatches mismatches = embree ? count_mismatches(run, rival_run) : Mismatches{};
+  const FmaRates fma = measure_fma_rates();
 
   if (o.json) {
     std::printf(
         "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
         "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
         "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
-        "\"bytes_per_tri\":%.3f,",
+        "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
         json_string(o.model).c_str(), mesh.size(), width, height, json_string(cpu_features().brand).c_str(),
         json_string(isa_name(config.isa)).c_str(), json_string(intersector_name(config.intersector)).c_str(),
         threads, bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
         bvh->traversal().direct_leaf ? "true" : "false", o.builds, build_s, json_array(build_runs).c_str(),
-        bytes_per_tri);
+        bytes_per_tri, fma.avx2, fma.avx512);
     print_sets_json(run);
     if (o.vs_embree) {
       std::printf(",\"embree\":{\"build_s\":%.6f,\"build_runs_s\":%s,\"max_isa\":\"%s\",", embree_build_s,
@@ -201,6 +221,10 @@ int run(const Options& o) {
       embree ? " each, rayvec's then embree's" : "");
   std::printf("cpu: %s; isa: %s; intersector: %s; threads: %d\n", cpu_features().brand.c_str(),
               isa_name(config.isa), intersector_name(config.intersector), threads);
+  std::printf("vector FMAs per cycle: avx2 %.2f, avx512 %.2f%s\n", fma.avx2, fma.avx512,
+              fma.avx512 > 0 && fma.avx512 < 0.7 * fma.avx2
+                  ? " (512-bit operations at half rate here: 16-wide kernels keep no edge in lanes a cycle)"
+                  : "");
   std::printf(
       "bvh: %d-wide, %u nodes, %u leaves, depth %u, leaf kernel %s; build %.4f s; %.1f "
       "bytes/triangle (nodes %.1f + triangles %.1f)\n",

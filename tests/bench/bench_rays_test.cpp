@@ -43,6 +43,32 @@ TEST(BenchRays, TinyRunPrintsJsonWithEverySetAndPacketsMatchSingleRays) {
   EXPECT_EQ(field(r.out, "shadow", "rays"), field(r.out, "primary", "hits"));
 }
 
+// Every run names the vector FMA rate of each width this CPU has (0 for a width it lacks), so a
+// host that runs 512-bit operations at half rate shows in the output that is quoted.
+TEST(BenchRays, PrintsTheVectorFmaRatesOfTheHost) {
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays_fma"));
+  const auto j = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --builds 1 --json");
+  ASSERT_EQ(j.status, 0) << j.err;
+  const std::smatch m = [&] {
+    std::smatch found;
+    std::regex_search(j.out, found,
+                      std::regex("\"fma_per_cycle\":\\{\"avx2\":([0-9.]+),\"avx512\":([0-9.]+)\\}"));
+    return found;
+  }();
+  ASSERT_EQ(m.size(), 3u) << j.out;
+  for (const auto& [isa, rate] :
+       {std::pair{Isa::avx2, std::stod(m[1])}, std::pair{Isa::avx512, std::stod(m[2])}}) {
+    if (isa_supported(isa)) {
+      EXPECT_GT(rate, 0.05) << isa_name(isa);  // at least one FMA every 20 cycles
+      EXPECT_LT(rate, 8.0) << isa_name(isa);   // no x86-64 core has more than four FMA pipes
+    } else {
+      EXPECT_EQ(rate, 0.0) << isa_name(isa);
+    }
+  }
+  const auto t = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --builds 1");
+  EXPECT_NE(t.out.find("vector FMAs per cycle: avx2 "), std::string::npos) << t.out;
+}
+
 // --builds N times N builds and reports their median as build_s (the upper median for even N).
 TEST(BenchRays, BuildsReportsEveryBuildAndTheirMedian) {
   const std::string obj = write_octahedron(test::temp_dir("bench_rays_builds"));
