@@ -34,9 +34,7 @@ std::string lower_extension(const std::string& path) {
 // by the table of srgb8.h rather than a pow() per channel.
 std::vector<std::uint8_t> encode_png_pixels(const Image& image) {
   std::vector<std::uint8_t> bytes(std::size_t(image.width) * image.height * 3);
-  const int n = image.nchannels();
-  for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)
-    for (int c = 0; c < 3; ++c) bytes[p * 3 + c] = srgb8(c < n ? image.pixels[p * n + c] : 0.0f);
+  srgb8_pixels(image.pixels.data(), image.nchannels(), std::size_t(image.width) * image.height, bytes.data());
   return bytes;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "image/image_io.h"
+#include "platform/attributes.h"
 
 namespace rayvec {
 namespace {
@@ -66,17 +67,58 @@ std::uint8_t srgb8_reference(float linear) {
   return static_cast<std::uint8_t>(std::lround(e * 255.0f));
 }
 
-std::uint8_t srgb8(float linear) {
-  static const Tables tables;
-  if (!(linear >= kSmallest)) return 0;  // NaN, negative, zero and tiny values
+namespace {
+
+const Tables& tables() {
+  static const Tables t;
+  return t;
+}
+
+// The lookup without a data-dependent branch: NaN, negative, zero and tiny values become
+// kSmallest (byte 0) and values from 1 up the float just below 1 (byte 255) by two selects, so
+// dark and saturated pixels cost what mid-tones cost.
+RAYVEC_INLINE unsigned lookup(const Tables& t, float linear) {
+  constexpr float kBelowOne = 0x1.fffffep-1f;
+  float x = linear >= kSmallest ? linear : kSmallest;
+  x = x < kBelowOne ? x : kBelowOne;
+  unsigned k = t.first[(std::bit_cast<std::uint32_t>(x) >> 16) - kFirstBucket];
+  for (int s = 0; s < kSteps; ++s) k += x >= t.thresholds[k] ? 1u : 0u;
+  return k;
+}
+
+unsigned lookup_slow(const Tables& t, float linear) {
+  if (!(linear >= kSmallest)) return 0;
   if (linear >= 1.0f) return 255;
-  unsigned k = tables.first[(std::bit_cast<std::uint32_t>(linear) >> 16) - kFirstBucket];
-  if (tables.few_steps) [[likely]] {
-    for (int s = 0; s < kSteps; ++s) k += linear >= tables.thresholds[k] ? 1u : 0u;
-  } else {
-    while (linear >= tables.thresholds[k]) ++k;
+  unsigned k = t.first[(std::bit_cast<std::uint32_t>(linear) >> 16) - kFirstBucket];
+  while (linear >= t.thresholds[k]) ++k;
+  return k;
+}
+
+}  // namespace
+
+std::uint8_t srgb8(float linear) {
+  const Tables& t = tables();
+  return static_cast<std::uint8_t>(t.few_steps ? lookup(t, linear) : lookup_slow(t, linear));
+}
+
+void srgb8_pixels(const float* linear, int channels, std::size_t count, std::uint8_t* rgb) {
+  const Tables& t = tables();
+  if (!t.few_steps) [[unlikely]] {
+    for (std::size_t p = 0; p < count; ++p)
+      for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = srgb8(c < channels ? linear[p * channels + c] : 0.0f);
+    return;
   }
-  return static_cast<std::uint8_t>(k);
+  if (channels >= 3) {
+    for (std::size_t p = 0; p < count; ++p, linear += channels, rgb += 3) {
+      rgb[0] = static_cast<std::uint8_t>(lookup(t, linear[0]));
+      rgb[1] = static_cast<std::uint8_t>(lookup(t, linear[1]));
+      rgb[2] = static_cast<std::uint8_t>(lookup(t, linear[2]));
+    }
+    return;
+  }
+  for (std::size_t p = 0; p < count; ++p)
+    for (int c = 0; c < 3; ++c)
+      rgb[p * 3 + c] = static_cast<std::uint8_t>(lookup(t, c < channels ? linear[p * channels + c] : 0.0f));
 }
 
 }  // namespace rayvec

@@ -5,11 +5,16 @@
 // from it only where the reference is not monotonic (tests/image/srgb8_test.cpp checks it is not).
 // NaN and values ≤ 0 give 0, values ≥ 1 give 255.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 namespace rayvec {
 
 std::uint8_t srgb8(float linear);
+
+// srgb8 of `count` pixels of `channels` floats each, three bytes a pixel: the first three
+// channels, a missing one as 0.
+void srgb8_pixels(const float* linear, int channels, std::size_t count, std::uint8_t* rgb);
 
 // The reference: lround(clamp(srgb_encode(v), 0, 1) · 255), NaN as 0.
 std::uint8_t srgb8_reference(float linear);

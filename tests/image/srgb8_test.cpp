@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "image/image_io.h"
 
@@ -49,6 +50,37 @@ TEST(Srgb8, SpecialValues) {
   EXPECT_EQ(srgb8(1.0f), 255);
   EXPECT_EQ(srgb8(7.0f), 255);
   EXPECT_EQ(srgb8(inf), 255);
+}
+
+// The row form gives srgb8 of each channel, a missing channel as 0, for every channel count.
+TEST(Srgb8, PixelsGiveTheBytesOfEachChannel) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const float values[] = {std::numeric_limits<float>::quiet_NaN(),
+                          -inf,
+                          -0.0f,
+                          0.0f,
+                          1e-30f,
+                          1.0f / 8192.0f,
+                          1.6e-4f,
+                          0.0031308f,
+                          0.2f,
+                          0.5f,
+                          0.9955f,
+                          0.99999994f,
+                          1.0f,
+                          3.0f,
+                          inf};
+  constexpr std::size_t kCount = sizeof values / sizeof values[0];
+  for (int channels = 1; channels <= 5; ++channels) {
+    std::vector<float> linear(kCount * std::size_t(channels));
+    for (std::size_t i = 0; i < linear.size(); ++i) linear[i] = values[(i * 7) % kCount];
+    std::vector<std::uint8_t> rgb(kCount * 3, 77);
+    srgb8_pixels(linear.data(), channels, kCount, rgb.data());
+    for (std::size_t p = 0; p < kCount; ++p)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(rgb[p * 3 + c], srgb8(c < channels ? linear[p * channels + c] : 0.0f))
+            << channels << " channels, pixel " << p << ", channel " << c;
+  }
 }
 
 }  // namespace
