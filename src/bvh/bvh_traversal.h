@@ -29,6 +29,7 @@ struct BvhTraversal {
   int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
   // The leaves call a float kernel of this ISA directly instead of through the kernel table
   // (default_direct_leaf): `mt` in closest() (on AVX2 also in occluded()), `watertight` in both.
+  // AVX-512's occluded() calls its float `mt` kernel directly whatever this says.
   bool direct_leaf = false;
 };
 
@@ -53,10 +54,10 @@ int default_bvh_width(Isa isa, std::size_t triangles);
 // Intel, where the closest-hit traversal then saves the save and reload of its ray registers around
 // every leaf call; on AMD's AVX-512 it measured slower (benchmarks.md#decision-direct-leaf-call). On
 // AVX2 the any-hit traversal then calls its leaf kernel directly too, with the ray's lanes formed
-// once per ray (benchmarks.md#decision-any-hit-leaf-lanes). `watertight`: on AVX2 and AVX-512, both
-// traversals, the ray's shear formed once per ray (bvh/watertight_leaf.inl;
-// benchmarks.md#decision-watertight-leaf). Other intersectors and the scalar ISA: the table. Same
-// results either way.
+// once per ray (benchmarks.md#decision-any-hit-leaf-lanes); AVX-512's any-hit traversal always does.
+// `watertight`: on AVX2 and AVX-512, both traversals, the ray's shear formed once per ray
+// (bvh/watertight_leaf.inl; benchmarks.md#decision-watertight-leaf). Other intersectors and the scalar ISA:
+// the table. Same results either way.
 bool default_direct_leaf(Isa isa, std::string_view vendor, Intersector intersector = Intersector::mt);
 
 // The table for (isa, width), with the direct leaf calls of `intersector` where `direct_leaf` and

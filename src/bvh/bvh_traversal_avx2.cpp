@@ -19,21 +19,14 @@ constexpr Isa kThisIsa = Isa::avx2;
 #include "bvh/watertight_packet_leaf.inl"
 #include "bvh/packet_traversal.inl"
 #include "bvh/watertight_leaf.inl"
+#include "bvh/mt_any_hit_leaf.inl"
 
 namespace {
-// The any-hit leaf kernel out of line, reading the ray's lanes from memory: inlined, its registers
-// would crowd the traversal loop's.
-template <class V>
-__attribute__((noinline)) bool occluded_mt_float_leaf(const TriangleArrays& T, uint32_t begin, uint32_t end,
-                                                      const MtAnyHitRay<V>& q, const HitFilter* filter) {
-  return occluded_mt_float_lanes<V>(T, begin, end, q, filter);
-}
-
 // The traversals' leaves by this unit's float `mt` single-ray kernels, called directly (not through
 // the table: the traversal's ray registers are not saved around an indirect call, and the call
 // skips the table entry's finite_ray test, which the rays reaching a leaf pass: bvh.cpp rejects
-// the others); other tables through the table. Same results. Any hit: the ray's lanes are broadcast
-// once per ray, not at every leaf (benchmarks.md#decision-any-hit-leaf-lanes).
+// the others); other tables through the table. Same results. Any hit: MtAnyHitLeaf
+// (bvh/mt_any_hit_leaf.inl).
 struct DirectMtLeaf {
   static RAYVEC_INLINE bool direct(const TriangleKernels& k) {
     return k.intersector == Intersector::mt && k.isa == kThisIsa;
@@ -48,19 +41,7 @@ struct DirectMtLeaf {
         closest_mt_float_one<vfloat, false>(tris, begin, end, ray, hit);
     }
   };
-  struct AnyHit {
-    MtAnyHitRay<vfloat> q;
-    const TriangleKernels& k;
-    const Ray& ray;
-    bool is_direct;
-    RAYVEC_INLINE AnyHit(const TriangleKernels& kernels, const TriangleArrays&, const Ray& r)
-        : q(mt_any_hit_ray<vfloat>(r)), k(kernels), ray(r), is_direct(direct(kernels)) {}
-    RAYVEC_INLINE bool occluded(const TriangleArrays& tris, uint32_t begin, uint32_t end,
-                                const HitFilter* filter) const {
-      if (!is_direct) return k.occluded(tris, begin, end, ray, filter);
-      return occluded_mt_float_leaf<vfloat>(tris, begin, end, q, filter);
-    }
-  };
+  using AnyHit = MtAnyHitLeaf<vfloat>;
 };
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).

@@ -19,12 +19,16 @@ constexpr Isa kThisIsa = Isa::avx512;
 #include "bvh/watertight_packet_leaf.inl"
 #include "bvh/packet_traversal.inl"
 #include "bvh/watertight_leaf.inl"
+#include "bvh/mt_any_hit_leaf.inl"
 
 namespace {
 // The closest-hit traversal's leaves by this unit's float `mt` kernel, called directly (inlined:
 // no call through the table, so the traversal's ray registers are not saved around it) when the
 // table is that kernel's; other tables through the table. The rays reaching a leaf are finite
 // (bvh.cpp rejects the others), so skipping the table entry's finite_ray test changes nothing.
+// Any hit: MtAnyHitLeaf (bvh/mt_any_hit_leaf.inl) in every table, whatever the closest-hit choice,
+// which depends on the vendor while the once-per-ray any-hit setup gained on AMD's AVX-512 as on
+// AVX2 (benchmarks.md#decision-any-hit-leaf-lanes).
 struct DirectMtLeaf {
   struct Closest : LeafRay {
     using LeafRay::LeafRay;
@@ -36,33 +40,33 @@ struct DirectMtLeaf {
         closest_mt_float_rays<vfloat, false, 1>(tris, begin, end, &ray, &hit);
     }
   };
-  using AnyHit = TableLeaf::AnyHit;
+  using AnyHit = MtAnyHitLeaf<vfloat>;
 };
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
 constinit const BvhTraversal k8{Isa::avx512,
                                 8,
                                 &bvh_closest<BoxLanes8>,
-                                &bvh_occluded<BoxLanes8>,
+                                &bvh_occluded<BoxLanes8, DirectMtLeaf>,
                                 &bvh_closest_packet<BoxLanes8, PacketLanes16>,
                                 16};
 constinit const BvhTraversal k16{Isa::avx512,
                                  16,
                                  &bvh_closest<BoxLanes16>,
-                                 &bvh_occluded<BoxLanes16>,
+                                 &bvh_occluded<BoxLanes16, DirectMtLeaf>,
                                  &bvh_closest_packet<BoxLanes16, PacketLanes16>,
                                  16};
 constinit const BvhTraversal k8_direct{Isa::avx512,
                                        8,
                                        &bvh_closest<BoxLanes8, DirectMtLeaf>,
-                                       &bvh_occluded<BoxLanes8>,
+                                       &bvh_occluded<BoxLanes8, DirectMtLeaf>,
                                        &bvh_closest_packet<BoxLanes8, PacketLanes16>,
                                        16,
                                        true};
 constinit const BvhTraversal k16_direct{Isa::avx512,
                                         16,
                                         &bvh_closest<BoxLanes16, DirectMtLeaf>,
-                                        &bvh_occluded<BoxLanes16>,
+                                        &bvh_occluded<BoxLanes16, DirectMtLeaf>,
                                         &bvh_closest_packet<BoxLanes16, PacketLanes16>,
                                         16,
                                         true};

@@ -514,7 +514,7 @@ void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end
 // One ray's constants of the float `mt` any-hit kernel: its lanes, the pre-test's lower and upper
 // factors and the exact upper bound, formed once per ray — by each table call, or once per
 // traversal when a BVH unit calls the leaf kernel directly with these lanes in memory
-// (bvh_traversal_avx2.cpp; benchmarks.md#decision-any-hit-leaf-lanes).
+// (bvh/mt_any_hit_leaf.inl; benchmarks.md#decision-any-hit-leaf-lanes).
 template <class V>
 struct MtAnyHitRay {
   RayLanes<V> r;

@@ -76,8 +76,9 @@ TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
 // picks the kernel's tmin = 0 form itself). With the `mt` intersector on AVX2 and AVX-512 the
 // closest-hit traversals are two different functions, on the scalar ISA the same (table) one; on
 // AVX2 the any-hit traversal's leaves are called directly too (with the ray's lanes formed once per
-// ray), with and without a filter. With `watertight` on AVX2 and AVX-512 both traversals call the
-// kernel directly, the ray's shear formed once per ray.
+// ray), with and without a filter; on AVX-512 they are under both settings (one any-hit function).
+// With `watertight` on AVX2 and AVX-512 both traversals call the kernel directly, the ray's shear
+// formed once per ray.
 TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   std::vector<Ray> rays = test::random_rays(1500, 1.5f, 21);
   for (std::size_t i = 0; i < rays.size(); ++i)
