@@ -3,7 +3,7 @@ find_package(OpenMP REQUIRED)
 find_package(tinyobjloader REQUIRED)
 find_package(FastFloat REQUIRED)  # libfast-float-dev: header only, obj_chunk.cpp
 include(${CMAKE_CURRENT_LIST_DIR}/OpenImageIO.cmake)  # only in the librayvec_oiio.so module
-find_package(OpenEXR 3 REQUIRED CONFIG)
+find_package(OpenEXR 3 REQUIRED CONFIG)  # only in the librayvec_exr.so module
 find_package(PNG REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(glm REQUIRED)

@@ -55,6 +55,7 @@ int run_compare(const Options& o) {
   const DiffMode mode = parse_mode(o.diff_mode);
   if (!o.diff.empty() && !is_writable_image_path(o.diff))
     throw InputError("--diff: " + o.diff + ": write the difference image as .png or .exr");
+  if (!o.diff.empty()) require_image_writer(o.diff);
   const double threshold = o.threshold >= 0 ? o.threshold : (o.max_pixel >= 0 ? o.max_pixel : 1.0 / 255.0);
   const double warn_threshold = o.warn_threshold >= 0 ? o.warn_threshold : threshold;
 

@@ -86,7 +86,10 @@ int run_render(RenderArgs& a) {
     throw InputError("-o: unknown image extension in '" + a.output + "' (use .png or .exr)");
   // Fail before the work, not after it: an unwritable -o is found by opening (and dropping) the
   // temporary the image will later be written through (AtomicFile::check). Rank 0 writes.
-  if (cluster().root()) AtomicFile::check(a.output);
+  if (cluster().root()) {
+    AtomicFile::check(a.output);
+    require_image_writer(a.output);
+  }
   if (!a.stats_json.empty()) {
     std::error_code e1, e2;
     if (std::filesystem::weakly_canonical(a.stats_json, e1) ==

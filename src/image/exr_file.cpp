@@ -1,46 +1,64 @@
-// The only file that includes the OpenEXR C++ library. Writes go to an in-memory stream (the caller
-// commits the bytes through AtomicFile); reads check the header first (exr_header.cpp).
+// EXR through librayvec_exr.so (exr_module_abi.h says why it is a module): loads it on first use,
+// drives its two-phase read (header, then the caller's size checks and buffer, then pixels a strip at a
+// time) and turns its status and message back into rayvec's errors. Writes come back as bytes that
+// the caller commits through AtomicFile.
 #include "image/exr_file.h"
 
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfIO.h>
-#include <OpenEXR/ImfInputFile.h>
-#include <OpenEXR/ImfOutputFile.h>
-#include <OpenEXR/ImfStandardAttributes.h>
-#include <OpenEXR/ImfStringAttribute.h>
-
 #include <algorithm>
-#include <cstring>
 #include <exception>
-#include <numeric>
+#include <mutex>
+#include <new>
 
 #include "image/exr_header.h"
+#include "image/exr_module_abi.h"
 #include "image/image_budget.h"
 #include "io/input_error.h"
+#include "platform/plugin.h"
 
 namespace rayvec {
 namespace {
 
-constexpr int kStripRows = 64;  // scanlines decoded per readPixels call
+constexpr int kStripRows = 64;  // scanlines decoded per read_rows call
+constexpr std::size_t kErrorSize = 8192;
 
-class MemoryStream : public Imf::OStream {
- public:
-  MemoryStream() : Imf::OStream("memory") {}
-  void write(const char c[], int n) override {
-    if (pos_ + std::size_t(n) > bytes_.size()) bytes_.resize(pos_ + std::size_t(n));
-    std::memcpy(bytes_.data() + pos_, c, std::size_t(n));
-    pos_ += std::size_t(n);
-  }
-  uint64_t tellp() override { return pos_; }
-  void seekp(uint64_t pos) override { pos_ = std::size_t(pos); }
-  std::vector<std::uint8_t>& bytes() { return bytes_; }
+#ifdef RAYVEC_EXR_MODULE_DIR
+constexpr const char* kBuildDir = RAYVEC_EXR_MODULE_DIR;
+#else
+constexpr const char* kBuildDir = nullptr;
+#endif
 
- private:
-  std::vector<std::uint8_t> bytes_;
-  std::size_t pos_ = 0;
+struct Module {
+  const RayvecExrModule* table = nullptr;  // null when it could not be loaded
+  std::string error;                       // why
 };
+
+Module load() {
+  Module m;
+  const Plugin p = open_plugin("RAYVEC_EXR_MODULE", kExrModuleName, kBuildDir, /*global=*/false);
+  if (!p.handle) {
+    m.error = plugin_problem(p, kExrModuleName,
+                             "; it is built beside the rayvec binary, or set RAYVEC_EXR_MODULE to its path");
+    return m;
+  }
+  const auto entry = reinterpret_cast<RayvecExrModuleFn>(plugin_symbol(p, "rayvec_exr_module"));
+  const RayvecExrModule* table = entry ? entry() : nullptr;
+  if (!table || table->abi != kRayvecExrAbi || !table->open || !table->channel || !table->read_rows ||
+      !table->close || !table->encode)
+    m.error = p.path + " is not a rayvec " + RAYVEC_VERSION + " EXR module (rebuild rayvec)";
+  else
+    m.table = table;
+  return m;
+}
+
+std::once_flag loaded_once;
+Module* loaded = nullptr;
+
+const RayvecExrModule& module(const std::string& what) {
+  std::call_once(loaded_once, [] { loaded = new Module(load()); });
+  if (!loaded->table)
+    throw RuntimeError(what + " needs OpenEXR through " + kExrModuleName + ": " + loaded->error);
+  return *loaded->table;
+}
 
 // OpenImageIO's order: within a layer R G B A Z first; the unlayered channels before any layer.
 int rank_in_layer(const std::string& base) {
@@ -66,36 +84,48 @@ std::vector<std::string> oiio_order(std::vector<std::string> names) {
   return names;
 }
 
+std::vector<const char*> c_strings(const std::vector<std::string>& strings) {
+  std::vector<const char*> out;
+  for (const std::string& s : strings) out.push_back(s.c_str());
+  return out;
+}
+
 }  // namespace
 
+void require_exr_module() { module("writing EXR"); }
+
 Image read_exr(const std::string& path) {
-  const ExrHeader h = read_exr_header(path);
+  const RayvecExrModule& m = module(path + ": reading EXR");
+  check_exr_attribute_sizes(path);
+  std::string error(kErrorSize, '\0');
+  auto why = [&] { return std::string("cannot read EXR: ") + error.c_str(); };
+  RayvecExrInfo h{};
+  void* file = nullptr;
+  if (m.open(path.c_str(), &file, &h, error.data(), error.size()) != kRayvecExrOk)
+    throw InputError(path, 0, why());
+  struct Closer {
+    const RayvecExrModule& m;
+    void* file;
+    ~Closer() { m.close(file); }
+  } closer{m, file};
   if (h.deep) throw InputError(path, 0, "cannot read EXR: deep images are not supported");
   if (h.subsampled) throw InputError(path, 0, "cannot read EXR: subsampled channels are not supported");
-  check_declared_image_size(path, h.width, h.height, int(h.channels.size()));
+  check_declared_image_size(path, h.width, h.height, h.channels);
 
   Image image;
   image.width = h.width;
   image.height = h.height;
-  image.channels = oiio_order(h.channels);
-  const std::size_t nch = image.channels.size();
-  const std::size_t row_floats = std::size_t(h.width) * nch;
+  for (int c = 0; c < h.channels; ++c) image.channels.emplace_back(m.channel(file, c));
+  image.channels = oiio_order(std::move(image.channels));
+  const std::vector<const char*> names = c_strings(image.channels);
+  const std::size_t row_floats = std::size_t(h.width) * names.size();
   try {
-    Imf::InputFile file(path.c_str());
     for (int y0 = 0; y0 < h.height; y0 += kStripRows) {
       const int y1 = std::min(h.height, y0 + kStripRows);  // rows [y0, y1) of the data window
       image.pixels.resize(std::size_t(y1) * row_floats);
-      // The slice addresses pixel (x, y) of the data window at base + x*xs + y*ys; point it at row 0.
-      char* row0 = reinterpret_cast<char*>(image.pixels.data()) -
-                   (std::ptrdiff_t(h.min_y) * std::ptrdiff_t(row_floats) +
-                    std::ptrdiff_t(h.min_x) * std::ptrdiff_t(nch)) *
-                       std::ptrdiff_t(sizeof(float));
-      Imf::FrameBuffer fb;
-      for (std::size_t c = 0; c < nch; ++c)
-        fb.insert(image.channels[c], Imf::Slice(Imf::FLOAT, row0 + c * sizeof(float), nch * sizeof(float),
-                                                row_floats * sizeof(float)));
-      file.setFrameBuffer(fb);
-      file.readPixels(h.min_y + y0, h.min_y + y1 - 1);
+      if (m.read_rows(file, names.data(), int(names.size()), image.pixels.data(), y0, y1, error.data(),
+                      error.size()) != kRayvecExrOk)
+        throw InputError(path, 0, why());
     }
   } catch (const InputError&) {
     throw;
@@ -106,27 +136,31 @@ Image read_exr(const std::string& path) {
 }
 
 std::vector<std::uint8_t> encode_exr(const Image& image, const ImageMetadata& metadata) {
-  Imf::Header header(image.width, image.height);
-  header.compression() = Imf::ZIP_COMPRESSION;
-  const std::size_t nch = image.channels.size();
-  for (const std::string& name : image.channels) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-  header.insert("oiio:ColorSpace", Imf::StringAttribute("Linear"));
-  for (const auto& [key, value] : metadata) header.insert(key, Imf::StringAttribute(value));
-
-  MemoryStream stream;
-  try {
-    Imf::OutputFile file(stream, header);
-    Imf::FrameBuffer fb;
-    char* base = reinterpret_cast<char*>(const_cast<float*>(image.pixels.data()));
-    for (std::size_t c = 0; c < nch; ++c)
-      fb.insert(image.channels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), nch * sizeof(float),
-                                              std::size_t(image.width) * nch * sizeof(float)));
-    file.setFrameBuffer(fb);
-    file.writePixels(image.height);
-  } catch (const std::exception& e) {
-    throw RuntimeError(std::string("cannot encode EXR: ") + e.what());
+  const RayvecExrModule& m = module("writing EXR");
+  const std::vector<const char*> names = c_strings(image.channels);
+  std::vector<const char*> keys, values;
+  for (const auto& [key, value] : metadata) {
+    keys.push_back(key.c_str());
+    values.push_back(value.c_str());
   }
-  return std::move(stream.bytes());
+  std::vector<std::uint8_t> bytes;
+  auto grow = [](void* user, std::size_t size) noexcept -> unsigned char* {
+    auto& v = *static_cast<std::vector<std::uint8_t>*>(user);
+    try {
+      v.resize(size);
+    } catch (const std::bad_alloc&) {
+      return nullptr;
+    }
+    return v.data();
+  };
+  std::size_t size = 0;
+  std::string error(kErrorSize, '\0');
+  if (m.encode(image.width, image.height, names.data(), int(names.size()), image.pixels.data(), keys.data(),
+               values.data(), int(keys.size()), grow, &bytes, &size, error.data(),
+               error.size()) != kRayvecExrOk)
+    throw RuntimeError(std::string("cannot encode EXR: ") + error.c_str());
+  bytes.resize(size);
+  return bytes;
 }
 
 }  // namespace rayvec

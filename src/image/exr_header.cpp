@@ -1,8 +1,7 @@
-// The only file that includes OpenEXRCore. Its errors go to a callback that keeps the last message
-// (the default one prints to stderr), and the message is thrown once the library has returned.
+// The attribute walk of an EXR header, in plain stdio: no OpenEXR here (the library is in the module
+// librayvec_exr.so, exr_module.cpp), so a corrupt header is refused before the module is asked to
+// parse it.
 #include "image/exr_header.h"
-
-#include <OpenEXR/openexr.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -13,17 +12,6 @@
 
 namespace rayvec {
 namespace {
-
-struct ErrorText {
-  char text[256] = "";
-};
-
-extern "C" void keep_exr_error(exr_const_context_t ctxt, exr_result_t code, const char* msg) {
-  void* user = nullptr;
-  if (ctxt && exr_get_user_data(ctxt, &user) == EXR_ERR_SUCCESS && user)
-    std::snprintf(static_cast<ErrorText*>(user)->text, sizeof ErrorText::text, "%s",
-                  msg ? msg : exr_get_default_error_message(code));
-}
 
 // A name from the file as printable ASCII: other bytes as \xNN.
 std::string printable(const std::string& name) {
@@ -53,15 +41,11 @@ long fixed_size(const std::string& type) {
   return -1;
 }
 
-// Walks the attribute list of every header (name, type, int32 size, value) and throws when a value
-// claims more bytes than the file holds or a size the C++ reader would not consume. That reader
-// allocates an attribute of unknown type at its declared size before reading it, reads a typed one
-// by its own layout whatever the size field says (and then parses the rest of the header out of
-// step), and allocates a preview at width x height x 4: one corrupt field in a small file would
-// cost gigabytes. OpenEXRCore skips such values unread and so does not catch it.
-void check_attribute_sizes(const std::string& path) {
+}  // namespace
+
+void check_exr_attribute_sizes(const std::string& path) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!f) return;  // exr_start_read reports it
+  if (!f) return;  // the module's open reports it
   std::fseek(f.get(), 0, SEEK_END);
   const long file_size = std::ftell(f.get());
   std::fseek(f.get(), 4, SEEK_SET);
@@ -132,48 +116,8 @@ void check_attribute_sizes(const std::string& path) {
   }
 }
 
-}  // namespace
-
 bool has_exr_magic(const unsigned char* bytes, std::size_t size) {
   return size >= 4 && bytes[0] == 0x76 && bytes[1] == 0x2f && bytes[2] == 0x31 && bytes[3] == 0x01;
-}
-
-ExrHeader read_exr_header(const std::string& path) {
-  check_attribute_sizes(path);
-  ErrorText error;
-  exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-  init.error_handler_fn = keep_exr_error;
-  init.user_data = &error;
-  exr_context_t ctxt = nullptr;
-  exr_result_t rc = exr_start_read(&ctxt, path.c_str(), &init);
-  auto fail = [&](exr_result_t code) {
-    const std::string why = error.text[0] ? error.text : exr_get_default_error_message(code);
-    exr_finish(&ctxt);
-    return InputError(path, 0, "cannot read EXR: " + why);
-  };
-  if (rc != EXR_ERR_SUCCESS) throw fail(rc);
-  ExrHeader h;
-  exr_storage_t storage{};
-  exr_attr_box2i_t box{};
-  const exr_attr_chlist_t* channels = nullptr;
-  if ((rc = exr_get_count(ctxt, &h.parts)) != EXR_ERR_SUCCESS ||
-      (rc = exr_get_storage(ctxt, 0, &storage)) != EXR_ERR_SUCCESS ||
-      (rc = exr_get_data_window(ctxt, 0, &box)) != EXR_ERR_SUCCESS ||
-      (rc = exr_get_channels(ctxt, 0, &channels)) != EXR_ERR_SUCCESS)
-    throw fail(rc);
-  h.deep = storage == EXR_STORAGE_DEEP_SCANLINE || storage == EXR_STORAGE_DEEP_TILED;
-  h.min_x = box.min.x;
-  h.min_y = box.min.y;
-  const long long w = (long long)box.max.x - box.min.x + 1, ht = (long long)box.max.y - box.min.y + 1;
-  h.width = w > 0 && w <= 0x7fffffff ? int(w) : 0;
-  h.height = ht > 0 && ht <= 0x7fffffff ? int(ht) : 0;
-  for (int c = 0; channels && c < channels->num_channels; ++c) {
-    const exr_attr_chlist_entry_t& e = channels->entries[c];
-    h.channels.emplace_back(e.name.str, std::size_t(e.name.length));
-    h.subsampled = h.subsampled || e.x_sampling != 1 || e.y_sampling != 1;
-  }
-  exr_finish(&ctxt);
-  return h;
 }
 
 }  // namespace rayvec

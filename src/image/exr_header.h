@@ -1,26 +1,21 @@
-// The header of an OpenEXR file, read through OpenEXRCore (exr_header.cpp is its only includer):
-// the core library parses the header alone and allocates nothing for the pixels, so a size can be
-// judged before the C++ library (exr_file.cpp) builds its tables for it.
+// What the binary checks of an EXR file before the module librayvec_exr.so (exr_module_abi.h) is asked
+// to parse it: the magic number, and an attribute walk in plain stdio (exr_header.cpp).
 #pragma once
 #include <cstddef>
 #include <string>
-#include <vector>
 
 namespace rayvec {
-
-struct ExrHeader {
-  int min_x = 0, min_y = 0;  // data window origin
-  int width = 0, height = 0;
-  std::vector<std::string> channels;  // as stored (alphabetical)
-  bool subsampled = false;            // a channel with x/y sampling other than 1
-  bool deep = false;
-  int parts = 0;
-};
 
 // True when `bytes` start with the OpenEXR magic number.
 bool has_exr_magic(const unsigned char* bytes, std::size_t size);
 
-// Parses the header of the first part; throws InputError naming the file when it is not valid.
-ExrHeader read_exr_header(const std::string& path);
+// Walks the attribute list of every header (name, type, int32 size, value) and throws InputError
+// naming the file when a value claims more bytes than the file holds or a size OpenEXR's C++ reader
+// would not consume. That reader allocates an attribute of unknown type at its declared size before
+// reading it, reads a typed one by its own layout whatever the size field says (and then parses the
+// rest of the header out of step), and allocates a preview at width x height x 4: one corrupt field
+// in a small file would cost gigabytes. OpenEXRCore skips such values unread and so does not catch it.
+// A file that cannot be opened or is shorter than its version field passes (the module reports it).
+void check_exr_attribute_sizes(const std::string& path);
 
 }  // namespace rayvec

@@ -1,5 +1,6 @@
-// Image files: PNG through libpng (png_file.cpp), EXR through OpenEXR (exr_file.cpp), every other
-// format through OpenImageIO in a module loaded only when such a file is read (oiio_module.cpp).
+// Image files: PNG through libpng (png_file.cpp), EXR through OpenEXR in a module loaded only when an
+// EXR is read or written (exr_file.cpp), every other format through OpenImageIO in a module loaded
+// only when such a file is read (oiio_module.cpp).
 // The format is told by the file's first bytes, not its name. Writes are encoded in memory and
 // committed through AtomicFile, so an interrupted render leaves nothing.
 #include "image/image_io.h"
@@ -99,6 +100,10 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
   if (std::fwrite(bytes.data(), 1, bytes.size(), file.stream()) != bytes.size())
     throw RuntimeError("cannot write " + path + ": short write");
   file.commit();
+}
+
+void require_image_writer(const std::string& path) {
+  if (lower_extension(path) == ".exr") require_exr_module();
 }
 
 Image read_image(const std::string& path) {

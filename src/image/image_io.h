@@ -1,9 +1,9 @@
 // Image files. Written:
 //   .exr — linear float, every channel of the Image (R G B and any AOVs), plus metadata.
 //   .png — the first three channels, sRGB-encoded (IEC 61966-2-1), 8 bits, clamped to [0, 1].
-// Read: PNG and EXR directly (libpng, OpenEXR), told by their first bytes; any other format
-// OpenImageIO knows through a module loaded on first use (oiio_module.h). Every reader checks the
-// declared size before decoding (image_budget.h).
+// Read: PNG directly (libpng) and EXR through OpenEXR in a module loaded on first use (exr_file.h),
+// told by their first bytes; any other format OpenImageIO knows through another such module
+// (oiio_module.h). Every reader checks the declared size before decoding (image_budget.h).
 #pragma once
 #include <string>
 #include <utility>
@@ -24,6 +24,10 @@ bool is_writable_image_path(const std::string& path);
 // (temporary in the same directory, renamed on success), so a failure never leaves a partial file.
 // Throws InputError (exit 2) for an extension other than .exr/.png, RuntimeError when writing fails.
 void write_image(const std::string& path, const Image& image, const ImageMetadata& metadata = {});
+
+// Loads what write_image will need for `path` (the EXR module for .exr), so that a command whose
+// output comes after long work fails before it: throws RuntimeError naming a module that is missing.
+void require_image_writer(const std::string& path);
 
 // Reads any format OpenImageIO knows, every channel as float as stored (8-bit PNG values become
 // v/255, still sRGB-encoded; EXR values are linear). Throws InputError naming the file for a

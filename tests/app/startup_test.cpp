@@ -1,7 +1,8 @@
-// Start-up cost: the rayvec binary needs only light shared libraries at start, and OpenImageIO (with
-// its ~260 dependencies, 0.25 s and 130 MB before main) is loaded only when a file that is neither
-// PNG nor EXR is read (docs/benchmarks.md#decision-image-io-without-openimageio). A structural check
-// rather than a timed one: a new heavy dependency fails it on any machine, however fast.
+// Start-up cost: the rayvec binary needs only light shared libraries at start. OpenImageIO (with its
+// ~260 dependencies, 0.25 s and 130 MB before main) is loaded only when a file that is neither PNG
+// nor EXR is read (docs/benchmarks.md#decision-image-io-without-openimageio), OpenEXR only when an EXR
+// is read or written (docs/benchmarks.md#decision-exr-module). A structural check rather than a timed
+// one: a new heavy dependency fails it on any machine, however fast.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -30,13 +31,13 @@ std::string shell_output(const std::string& cmd) {
 }
 
 // Every library `ldd` lists for the binary must be one of these (the closure of what rayvec links:
-// libc, C++ runtime, OpenMP, GMP, tinyobjloader, OpenEXR with Imath and zlib, libpng). A new entry
-// costs every command its loading time: measure it with scripts/startup_cost.sh and load it on
-// demand if it is heavy, before adding it here — as OpenImageIO (librayvec_oiio.so), MPI
-// (librayvec_mpi.so) and the Embree rival with TBB (librayvec_embree.so) are.
+// libc, C++ runtime, OpenMP, GMP, tinyobjloader, libpng with zlib). A new entry costs every command
+// its loading time: measure it with scripts/startup_cost.sh and load it on demand if it is heavy,
+// before adding it here — as OpenImageIO (librayvec_oiio.so), OpenEXR with Imath
+// (librayvec_exr.so), MPI (librayvec_mpi.so) and the Embree rival with TBB (librayvec_embree.so) are.
 const std::regex kAllowed(
     "(linux-vdso|ld-linux-x86-64|libc|libm|libstdc\\+\\+|libgcc_s|libgomp|libgmp|libtinyobjloader|"
-    "libOpenEXR-3_1|libOpenEXRCore-3_1|libIex-3_1|libIlmThread-3_1|libImath-3_1|libz|libpng16|"
+    "libz|libpng16|"
     // the sanitizer runtimes and GMP's C++ layer, present in the instrumented build only
     "libasan|libubsan|libgmpxx)\\.so.*");
 
@@ -58,6 +59,7 @@ TEST(Startup, BinaryNeedsOnlyLightSharedLibraries) {
   }
   EXPECT_LE(libraries, 24) << ldd;
   EXPECT_EQ(ldd.find("OpenImageIO"), std::string::npos) << ldd;
+  EXPECT_EQ(ldd.find("OpenEXR"), std::string::npos) << ldd;
 }
 
 // True when the dynamic loader opened `module` (librayvec_oiio.so by default) while `rayvec ARGS` ran.
@@ -99,6 +101,51 @@ TEST(Startup, MissingModuleIsARuntimeErrorNamingIt) {
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("RAYVEC_OIIO_MODULE"), std::string::npos) << r.err;
+}
+
+// OpenEXR is loaded, through librayvec_exr.so, by the commands that read or write an EXR alone.
+TEST(Startup, ExrModuleLoadsOnlyWhenAnExrIsReadOrWritten) {
+  const std::string dir = test::temp_dir("exr_module_use");
+  write_image(dir + "/a.png", Image(4, 4, {"R", "G", "B"}));
+  write_image(dir + "/a.exr", Image(4, 4, {"R", "G", "B"}));
+  test::write_file(dir + "/t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string render =
+      "render '" + dir + "/t.obj' --width 8 --height 8 --spp 1 --threads 1 -q -o '" + dir;
+  int status = -1;
+  EXPECT_FALSE(module_loaded_by("--help", &status, "librayvec_exr.so"));
+  EXPECT_FALSE(module_loaded_by("--help", &status, "libOpenEXR"));
+  EXPECT_FALSE(module_loaded_by("compare '" + dir + "/a.png' '" + dir + "/a.png'", &status, "libOpenEXR"));
+  EXPECT_EQ(status, 0);
+  EXPECT_FALSE(module_loaded_by(render + "/out.png'", &status, "librayvec_exr.so"));
+  EXPECT_EQ(status, 0);
+  EXPECT_TRUE(module_loaded_by(render + "/out.exr'", &status, "librayvec_exr.so"));
+  EXPECT_EQ(status, 0);
+  EXPECT_TRUE(module_loaded_by("compare '" + dir + "/a.png' '" + dir + "/a.exr'", &status, "libOpenEXR"));
+  EXPECT_EQ(status, 0);
+}
+
+// Without the module, reading or writing an EXR fails with exit 1 naming it and how to point to it;
+// a render to EXR fails before rendering, leaving no file.
+TEST(Startup, MissingExrModuleIsARuntimeErrorNamingIt) {
+  const std::string dir = test::temp_dir("exr_module_missing");
+  write_image(dir + "/a.exr", Image(4, 4, {"R", "G", "B"}));
+  test::write_file(dir + "/t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  ::setenv("RAYVEC_EXR_MODULE", (dir + "/nowhere/librayvec_exr.so").c_str(), 1);
+  const auto read = test::run_cli("compare '" + dir + "/a.exr' '" + dir + "/a.exr'");
+  const auto write =
+      test::run_cli("render '" + dir + "/t.obj' --width 8 --height 8 --spp 1 -q -o '" + dir + "/out.exr'");
+  ::unsetenv("RAYVEC_EXR_MODULE");
+  EXPECT_EQ(read.status, 1) << read.err;
+  EXPECT_NE(read.err.find("a.exr: reading EXR needs OpenEXR through librayvec_exr.so: librayvec_exr.so not "
+                          "found (looked for " +
+                          dir + "/nowhere/librayvec_exr.so)"),
+            std::string::npos)
+      << read.err;
+  EXPECT_NE(read.err.find("RAYVEC_EXR_MODULE"), std::string::npos) << read.err;
+  EXPECT_EQ(write.status, 1) << write.err;
+  EXPECT_NE(write.err.find("writing EXR needs OpenEXR through librayvec_exr.so"), std::string::npos)
+      << write.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out.exr"));
 }
 
 // Embree (and TBB) are loaded by `bench rays --vs-embree` alone, through librayvec_embree.so.
