@@ -1,5 +1,6 @@
-// Fuzzes the PNG and EXR readers (read_png through libpng, read_exr_header through OpenEXRCore,
-// read_exr through the OpenEXR C++ library) and the declared-size checks in front of them. Inputs
+// Fuzzes the PNG and EXR readers (read_png through libpng; read_exr: the attribute walk, then
+// OpenEXRCore's header parser and the OpenEXR C++ library in librayvec_exr.so, built instrumented
+// beside the harness and loaded on the first EXR) and the declared-size checks in front of them. Inputs
 // that start with neither the PNG signature nor the EXR magic are skipped: other formats belong to
 // OpenImageIO's module. The input limit is lowered to 4 MB so that a header declaring a large
 // raster must be refused, not decoded. Only InputError may escape; an image that loads must hold
