@@ -103,7 +103,12 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
   }
   int32_t fallback = -1;  // the MTL default, for triangles the OBJ gives no material
   const std::size_t first_tri = mesh.size(), tris = first_tri + model.mesh.size();
-  make_room(mesh.positions, 3 * tris);
+  // Shared vertices stay shared: each vertex a triangle uses is transformed once and stored once,
+  // in the order of first use (a vertex no triangle uses is left out, so the scene's bounds and
+  // default view are those of its triangles). Stored per corner, a million-triangle mesh held six
+  // copies of each vertex (36 bytes a triangle instead of about 6) and transformed each six times.
+  make_room(mesh.positions,
+            mesh.positions.size() + std::min(model.mesh.positions.size(), 3 * model.mesh.size()));
   make_room(mesh.triangles, tris);
   make_room(triangle_material, tris);
   make_room(triangle_object, tris);
@@ -112,6 +117,22 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
   if (!model.normals.empty())
     make_room(corner_normals, corner_normals.size() + model.triangle_normals.size());
   if (!model.texcoords.empty()) make_room(corner_uv, corner_uv.size() + model.triangle_texcoords.size());
+  constexpr uint32_t kUnplaced = 0xffffffffu;
+  std::vector<uint32_t> placed(model.mesh.positions.size(), kUnplaced);
+  const auto vertex = [&](uint32_t i) {
+    if (placed[i] == kUnplaced) {
+      placed[i] = static_cast<uint32_t>(mesh.positions.size());
+      // + 0 turns −0 into +0 as point()'s double arithmetic does
+      const Vec3f p = model.mesh.positions[i];
+      mesh.positions.push_back(map.is_identity() ? p + Vec3f{0, 0, 0} : map.point(p));
+    }
+    return placed[i];
+  };
+  std::vector<Vec3f> normals(model.normals.size());  // each transformed once
+  for (std::size_t i = 0; i < normals.size(); ++i) normals[i] = map.normal(model.normals[i]);
+  // A mirroring transform reverses winding; swap two corners so normals stay outward.
+  const int c1 = map.flips_orientation() ? 2 : 1, c2 = map.flips_orientation() ? 1 : 2;
+  const int corner[3] = {0, c1, c2};
   for (std::size_t t = 0; t < model.mesh.size(); ++t) {
     int32_t material = t < model.triangle_material.size() ? model.triangle_material[t] : -1;
     if (material >= 0 && material < int32_t(model.materials.size())) {
@@ -124,17 +145,19 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
       }
       material = fallback;
     }
-    // A mirroring transform reverses winding; swap two corners so normals stay outward.
-    const int c1 = map.flips_orientation() ? 2 : 1, c2 = map.flips_orientation() ? 1 : 2;
-    const int corner[3] = {0, c1, c2};
-    add_triangle(map.point(model.mesh.vertex(t, 0)), map.point(model.mesh.vertex(t, c1)),
-                 map.point(model.mesh.vertex(t, c2)), material);
+    const auto& source = model.mesh.triangles[t];
+    const uint32_t a = vertex(source[0]), b = vertex(source[c1]), c = vertex(source[c2]);
+    mesh.triangles.push_back({a, b, c});
+    triangle_material.push_back(material);
+    triangle_object.push_back(static_cast<int32_t>(object_count_));
+    normals_of.push_back(kNoCorners);
+    uv_of.push_back(kNoCorners);
     const std::size_t tri = first_tri + t;
     if (t < model.triangle_normals.size()) {
       const auto& idx = model.triangle_normals[t];
       if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0) {
         std::array<Vec3f, 3> n;
-        for (int k = 0; k < 3; ++k) n[k] = map.normal(model.normals[idx[corner[k]]]);
+        for (int k = 0; k < 3; ++k) n[k] = normals[idx[corner[k]]];
         set_normals(tri, n);
       }
     }

@@ -40,6 +40,7 @@ AffineMap::AffineMap(const Transform& t) : translate_(Vec3d(t.translate)) {
   // rather than by glm::inverseTranspose, which would round through cofactors and a determinant.
   store(r * glm::diagonal3x3(1.0 / s), normal_);
   flips_ = ((t.scale.x < 0) != (t.scale.y < 0)) != (t.scale.z < 0);  // odd number of mirrors
+  identity_ = linear_ == std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1} && translate_ == Vec3d{0, 0, 0};
 }
 
 Vec3f AffineMap::point(Vec3f p) const {

@@ -24,12 +24,15 @@ class AffineMap {
   // True when the map mirrors space (odd number of negative scales): triangle winding must flip
   // so geometric normals keep pointing outward.
   bool flips_orientation() const { return flips_; }
+  // True for the identity map (point() then returns its argument unchanged).
+  bool is_identity() const { return identity_; }
 
  private:
   // Column-major 3×3 matrices, glm::dmat3's layout (transform.cpp is GLM's one includer).
   std::array<double, 9> linear_{}, normal_{};
   Vec3d translate_;
   bool flips_ = false;
+  bool identity_ = false;
 };
 
 }  // namespace rayvec
