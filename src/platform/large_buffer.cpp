@@ -37,4 +37,16 @@ void advise_huge_pages(const void* data, std::size_t bytes) {
 #endif
 }
 
+void prefault_pages(const void* data, std::size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  constexpr std::uintptr_t kPage = 4096;  // madvise wants a page-aligned start
+  const auto begin = reinterpret_cast<std::uintptr_t>(data) / kPage * kPage;
+  const auto end = reinterpret_cast<std::uintptr_t>(data) + bytes;
+  if (bytes > 0) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);  // best effort
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
 }  // namespace rayvec

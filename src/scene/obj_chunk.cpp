@@ -225,40 +225,6 @@ class ChunkParser {
 
 }  // namespace
 
-ObjCounts estimate_obj_counts(std::string_view text) {
-  constexpr std::size_t kSamples = 16, kWindow = 4096;
-  ObjCounts n;
-  std::size_t covered = 0;  // bytes of the lines counted
-  const bool whole = text.size() <= kSamples * kWindow;
-  const std::size_t step = whole ? text.size() : text.size() / kSamples;
-  for (std::size_t at = 0; at < text.size(); at += step) {
-    std::string_view window = text.substr(at, whole ? text.size() : kWindow);
-    if (at > 0) {  // from the first line start in the window
-      const std::size_t lf = window.find('\n');
-      window.remove_prefix(lf == std::string_view::npos ? window.size() : lf + 1);
-    }
-    for (std::size_t lf; (lf = window.find('\n')) != std::string_view::npos; window.remove_prefix(lf + 1)) {
-      const std::string_view line = window.substr(0, lf);
-      covered += lf + 1;
-      if (line.rfind("vn ", 0) == 0) ++n.normals;
-      if (line.rfind("v ", 0) == 0) ++n.positions;
-      if (line.rfind("vt ", 0) == 0) ++n.texcoords;
-      if (line.rfind("f ", 0) == 0) {
-        std::size_t corners = 0;
-        for (std::size_t i = 1; i < line.size(); ++i) corners += is_blank(line[i - 1]) && !is_blank(line[i]);
-        n.triangles += corners > 2 ? corners - 2 : 1;
-      }
-    }
-  }
-  if (covered == 0) return n;
-  const auto scale = [&](std::size_t count) {
-    return static_cast<std::size_t>(static_cast<double>(count) * 1.2 * static_cast<double>(text.size()) /
-                                    static_cast<double>(covered)) +
-           16;
-  };
-  return {scale(n.positions), scale(n.normals), scale(n.texcoords), scale(n.triangles)};
-}
-
 void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
   Cursor in(text.data(), text.data() + text.size());
   ChunkParser parser(chunk);

@@ -46,13 +46,6 @@ struct ObjChunk {
   bool ok = true;  // false: the text needs the reference path
 };
 
-// About how many elements of each kind `text` holds, from samples of its lines; for reserving
-// arrays once instead of growing them (each growth copies and touches fresh memory).
-struct ObjCounts {
-  std::size_t positions = 0, normals = 0, texcoords = 0, triangles = 0;
-};
-ObjCounts estimate_obj_counts(std::string_view text);
-
 // Parses `text` (whole lines: it starts at a line start and ends after a line end or at the end of
 // the file). On return `chunk.ok` says whether the text lies in the fast subset.
 void parse_obj_chunk(std::string_view text, ObjChunk& chunk);

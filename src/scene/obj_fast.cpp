@@ -12,23 +12,10 @@
 
 #include "platform/large_buffer.h"
 #include "scene/obj_chunk.h"
+#include "scene/obj_sample.h"
 
 namespace rayvec {
 namespace {
-
-std::vector<std::string_view> split_at_lines(std::string_view text, int pieces) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  for (int i = 1; i < pieces && start < text.size(); ++i) {
-    const std::size_t target = std::max(start, text.size() / static_cast<std::size_t>(pieces) * i);
-    const std::size_t lf = text.find('\n', target);
-    const std::size_t cut = lf == std::string_view::npos ? text.size() : lf + 1;
-    out.push_back(text.substr(start, cut - start));
-    start = cut;
-  }
-  if (start < text.size() || out.empty()) out.push_back(text.substr(start));
-  return out;
-}
 
 template <typename T>
 void reserve(std::vector<T>& v, std::size_t count) {
@@ -36,28 +23,60 @@ void reserve(std::vector<T>& v, std::size_t count) {
   advise_huge_pages(v.data(), v.capacity() * sizeof(T));
 }
 
-void reserve(ObjChunk& c, const ObjCounts& n, double share) {
-  const auto part = [share](std::size_t count) { return static_cast<std::size_t>(double(count) * share); };
-  reserve(c.positions, part(n.positions));
-  reserve(c.normals, part(n.normals));
-  reserve(c.texcoords, part(n.texcoords));
-  reserve(c.triangles, part(n.triangles));
-  reserve(c.triangle_normals, part(n.triangles));
-  reserve(c.triangle_texcoords, part(n.triangles));
+void reserve(ObjChunk& c, const ObjCounts& n) {
+  reserve(c.positions, n.positions);
+  reserve(c.normals, n.normals);
+  reserve(c.texcoords, n.texcoords);
+  reserve(c.triangles, n.triangles);
+  reserve(c.triangle_normals, n.triangles);
+  reserve(c.triangle_texcoords, n.triangles);
 }
 
-// The first piece's arrays have room for the whole file: the others are appended to them in place.
-void parse_in_parallel(std::string_view text, const std::vector<std::string_view>& pieces,
-                       std::vector<ObjChunk>& chunks) {
-  const ObjCounts counts = estimate_obj_counts(text);
-  for (std::size_t i = 0; i < pieces.size(); ++i)
-    reserve(chunks[i], counts, i == 0 ? 1.0 : double(pieces[i].size()) / double(text.size()));
+// Room reserved for one array of the joined result, and where a later piece will probably land in it.
+struct Destination {
+  const char* data;
+  std::size_t capacity, element;  // elements, bytes per element
+};
+
+template <typename T>
+Destination destination(const std::vector<T>& v) {
+  return {reinterpret_cast<const char*>(v.data()), v.capacity(), sizeof(T)};
+}
+
+// Faults in the pages where `count` elements starting near `expected` will be appended, so that the
+// serial append after the parallel parse copies into ready memory (fresh pages cost more than the
+// copy). The estimate is a sample's: a margin on both sides; pages outside it fault on the append.
+void prepare(const Destination& d, std::size_t expected, std::size_t count) {
+  if (count == 0) return;
+  const std::size_t margin = expected / 20 + 1024;
+  const std::size_t from = std::min(d.capacity, expected - std::min(expected, margin));
+  const std::size_t to = std::min(d.capacity, expected + margin + count);
+  if (from < to) prefault_pages(d.data + from * d.element, (to - from) * d.element);
+}
+
+// The first piece's arrays have room for the whole file: the others are appended to them in place,
+// into pages their own threads fault in while the first piece is still parsing.
+void parse_in_parallel(std::string_view text, const ObjSample& sample,
+                       const std::vector<std::string_view>& pieces, std::vector<ObjChunk>& chunks) {
+  reserve(chunks[0], sample.capacity());
+  const std::array<Destination, 6> joined{
+      destination(chunks[0].positions),        destination(chunks[0].normals),
+      destination(chunks[0].texcoords),        destination(chunks[0].triangles),
+      destination(chunks[0].triangle_normals), destination(chunks[0].triangle_texcoords)};
   std::vector<std::exception_ptr> failures(pieces.size());
   std::vector<std::thread> workers;
   for (std::size_t i = 1; i < pieces.size(); ++i)
     workers.emplace_back([&, i] {
       try {
-        parse_obj_chunk(pieces[i], chunks[i]);
+        ObjChunk& c = chunks[i];
+        reserve(c, ObjSample(pieces[i]).capacity());
+        parse_obj_chunk(pieces[i], c);
+        if (!c.ok) return;
+        const ObjCounts at = sample.before(static_cast<std::size_t>(pieces[i].data() - text.data()));
+        prepare(joined[0], at.positions, c.positions.size());
+        prepare(joined[1], at.normals, c.normals.size());
+        prepare(joined[2], at.texcoords, c.texcoords.size());
+        for (int k = 3; k < 6; ++k) prepare(joined[k], at.triangles, c.triangles.size());
       } catch (...) {  // std::bad_alloc: rethrown on the caller's thread
         failures[i] = std::current_exception();
       }
@@ -185,10 +204,15 @@ void append(std::vector<T>& to, std::vector<T>& from) {
 
 bool load_obj_fast(std::string_view text, int threads, const MtlLibraryLoader& load_mtl, ObjModel& model,
                    std::string& warn, std::string& err) {
-  threads = std::max(threads, 1);
-  const std::vector<std::string_view> pieces = split_at_lines(text, threads);
+  const ObjSample sample(text);
+  return load_obj_pieces(text, sample, sample.split(std::max(threads, 1)), load_mtl, model, warn, err);
+}
+
+bool load_obj_pieces(std::string_view text, const ObjSample& sample,
+                     const std::vector<std::string_view>& pieces, const MtlLibraryLoader& load_mtl,
+                     ObjModel& model, std::string& warn, std::string& err) {
   std::vector<ObjChunk> chunks(pieces.size());
-  parse_in_parallel(text, pieces, chunks);
+  parse_in_parallel(text, sample, pieces, chunks);
 
   // Indices that leave their piece: valid only if the earlier pieces define what they refer to.
   // Forward references (valid OBJ, but tinyobjloader may drop a quad using one) take the

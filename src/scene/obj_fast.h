@@ -10,8 +10,10 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/obj_loader.h"
+#include "scene/obj_sample.h"
 
 namespace rayvec {
 
@@ -27,5 +29,12 @@ using MtlLibraryLoader = std::function<bool(const std::string& file, std::map<st
 // tinyobjloader's warnings go to `warn` and the MTL loader's errors to `err`, in file order.
 bool load_obj_fast(std::string_view text, int threads, const MtlLibraryLoader& load_mtl, ObjModel& model,
                    std::string& warn, std::string& err);
+
+// The same with the pieces given: runs of whole lines of `text`, in order, covering it exactly (the
+// first may be all of it); one thread each. `sample` is ObjSample(text). load_obj_fast cuts the text
+// with ObjSample::split; tests cut it anywhere else, to show that the cuts change nothing.
+bool load_obj_pieces(std::string_view text, const ObjSample& sample,
+                     const std::vector<std::string_view>& pieces, const MtlLibraryLoader& load_mtl,
+                     ObjModel& model, std::string& warn, std::string& err);
 
 }  // namespace rayvec
