@@ -24,8 +24,9 @@ using MtlLibraryLoader = std::function<bool(const std::string& file, std::map<st
 
 // Fills the geometry, attributes and triangle_material of `model` from `text` and returns true, or
 // returns false without touching `model` or calling `load_mtl` when the text needs the reference
-// path. `threads`: that many pieces and threads; 0 means 1 (a second thread does not pay yet: see
-// benchmarks.md#decision-obj-fast-path).
+// path. `threads`: at most that many pieces and threads, cut by ObjSample::split; 0 means 1
+// (load_obj's callers use one: a second is faster only while both cores are idle, and then by
+// about a fifth; see benchmarks.md#decision-obj-fast-path).
 // tinyobjloader's warnings go to `warn` and the MTL loader's errors to `err`, in file order.
 bool load_obj_fast(std::string_view text, int threads, const MtlLibraryLoader& load_mtl, ObjModel& model,
                    std::string& warn, std::string& err);

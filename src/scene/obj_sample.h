@@ -1,7 +1,7 @@
 // ObjSample: what a few windows of an OBJ text say about the whole of it, before it is parsed — how
 // many elements of each kind it holds (to reserve arrays once instead of growing them; each growth
 // copies and touches fresh memory) and where to cut it into pieces that take about equally long to
-// parse on parallel threads (face lines cost about three times as much per byte as vertex lines: more
+// parse on parallel threads (a byte of a face line costs about 1.7 times one of a vertex line: more
 // output per byte of text; see benchmarks.md#decision-obj-fast-path).
 #pragma once
 #include <cstddef>
