@@ -1,8 +1,13 @@
 #include "io/text_file.h"
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -24,14 +29,112 @@ constexpr std::size_t kDefaultLimitMb = 4096;
                        "RAYVEC_MAX_INPUT_MB=16000) if this really is the file you meant");
 }
 
-[[noreturn]] void binary(const std::string& path, const std::string& text, std::size_t nul) {
+[[noreturn]] void binary(const std::string& path, std::string_view text, std::size_t nul) {
   const auto line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + nul, '\n'));
   throw InputError(path, line,
                    "contains a NUL byte: this is binary data, not a text file (UTF-16 or UTF-32 "
                    "text must be saved as UTF-8)");
 }
 
+constexpr std::size_t kMapFrom = std::size_t(1) << 20;  // smaller files are copied: cheap either way
+
+[[noreturn]] void utf16(const std::string& path) {
+  throw InputError(path, 0,
+                   "is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8 or ASCII");
+}
+
+bool starts_with(std::string_view text, std::string_view prefix) {
+  return text.substr(0, prefix.size()) == prefix;
+}
+
+// The one file mapped at a time (inputs are read one after another) and its name, for the SIGBUS
+// handler: a fault inside it means the file shrank under the mapping.
+std::atomic<const char*> mapped_begin{nullptr};
+std::atomic<std::size_t> mapped_size{0};
+char mapped_name[512];
+
+void on_sigbus(int sig, siginfo_t* info, void*) {
+  const char* begin = mapped_begin.load();
+  const auto* at = static_cast<const char*>(info->si_addr);
+  if (begin && at >= begin && at < begin + mapped_size.load()) {
+    static const char prefix[] = "rayvec: ";
+    static const char suffix[] = " was truncated while it was being read\n";
+    ssize_t ignored = write(2, prefix, sizeof prefix - 1);
+    ignored = write(2, mapped_name, std::strlen(mapped_name));
+    ignored = write(2, suffix, sizeof suffix - 1);
+    (void)ignored;
+    _exit(1);
+  }
+  signal(sig, SIG_DFL);  // not ours: the default action (a core dump), as without the handler
+  raise(sig);
+}
+
+void watch_mapping(const char* begin, std::size_t size, const std::string& path) {
+  static const bool installed = [] {
+    struct sigaction sa {};
+    sa.sa_sigaction = on_sigbus;
+    sa.sa_flags = SA_SIGINFO;
+    sigemptyset(&sa.sa_mask);
+    return sigaction(SIGBUS, &sa, nullptr) == 0;
+  }();
+  (void)installed;
+  std::snprintf(mapped_name, sizeof mapped_name, "%s", path.c_str());
+  mapped_size.store(size);
+  mapped_begin.store(begin);
+}
+
 }  // namespace
+
+TextFile::TextFile(const std::string& path) {
+  struct stat st {};
+  const int fd = path == "-" ? -1 : open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && std::size_t(st.st_size) >= kMapFrom) {
+    const std::size_t size = static_cast<std::size_t>(st.st_size);
+    if (size > max_input_bytes()) {
+      close(fd);
+      too_large(path);
+    }
+    void* p = mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    close(fd);
+    if (p != MAP_FAILED) {
+      map_ = p;
+      map_size_ = size;
+      text_ = std::string_view(static_cast<const char*>(p), size);
+      watch_mapping(static_cast<const char*>(p), size, path);
+      try {
+        if (starts_with(text_, "\xFF\xFE") || starts_with(text_, "\xFE\xFF")) utf16(path);
+        if (const std::size_t nul = text_.find('\0'); nul != std::string_view::npos) binary(path, text_, nul);
+      } catch (...) {  // no destructor runs for a constructor that throws
+        unmap();
+        throw;
+      }
+      if (starts_with(text_, "\xEF\xBB\xBF")) text_.remove_prefix(3);  // UTF-8 byte-order mark
+      return;
+    }
+  } else if (fd >= 0) {
+    close(fd);
+  }
+  owned_ = read_text_file(path);  // streams, small files, and where mapping fails
+  text_ = owned_;
+}
+
+TextFile::TextFile(TextFile&& other) noexcept
+    : owned_(std::move(other.owned_)), map_(other.map_), map_size_(other.map_size_), text_(other.text_) {
+  if (!map_) text_ = owned_;
+  other.map_ = nullptr;
+  other.map_size_ = 0;
+  other.text_ = {};
+}
+
+TextFile::~TextFile() { unmap(); }
+
+void TextFile::unmap() {
+  if (!map_) return;
+  if (mapped_begin.load() == static_cast<const char*>(map_)) mapped_begin.store(nullptr);
+  munmap(map_, map_size_);
+  map_ = nullptr;
+  text_ = {};
+}
 
 std::size_t max_input_bytes() {
   const char* env = std::getenv("RAYVEC_MAX_INPUT_MB");
@@ -68,10 +171,7 @@ std::string read_text_file(const std::string& given) {
     if (text.size() + got > limit) too_large(path);
     const std::size_t before = text.size();
     text.append(buffer, got);
-    if (before == 0 && (text.rfind("\xFF\xFE", 0) == 0 || text.rfind("\xFE\xFF", 0) == 0))
-      throw InputError(path, 0,
-                       "is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as "
-                       "UTF-8 or ASCII");
+    if (before == 0 && (text.rfind("\xFF\xFE", 0) == 0 || text.rfind("\xFE\xFF", 0) == 0)) utf16(path);
     // Checked per block so that /dev/zero or a binary stream fails at its first block.
     if (const std::size_t nul = text.find('\0', before); nul != std::string::npos) binary(path, text, nul);
   }

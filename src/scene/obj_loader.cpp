@@ -122,7 +122,8 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
 ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoadTimes* times) {
   ObjLoadTimes clock;
   auto t0 = std::chrono::steady_clock::now();
-  const std::string text = read_text_file(path);
+  const TextFile file(path);
+  const std::string_view text = file.text();
   clock.read = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
@@ -141,7 +142,7 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
     const double before_check = seconds_since(t0);
     check_obj_text(text, path);
     clock.check = seconds_since(t0) - before_check;
-    std::istringstream in(text);
+    std::istringstream in{std::string(text)};
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, true))
       throw InputError(path, 0, "cannot parse: " + err);
   }

@@ -97,5 +97,68 @@ TEST(TextFile, Utf16IsNamedNotCalledBinary) {
   EXPECT_NE(error_of(dir + "/w.obj").find("is UTF-16 text"), std::string::npos) << error_of(dir + "/w.obj");
 }
 
+// The message TextFile throws for `path` ("" when it does not throw).
+std::string mapped_error_of(const std::string& path) {
+  try {
+    TextFile file(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A file of 1 MiB and more is mapped, not copied, and reads as read_text_file reads it; a smaller
+// one is read.
+TEST(TextFile, BigFilesAreMappedWithTheSameText) {
+  const std::string dir = test::temp_dir("text_file_map");
+  std::string big = "\xEF\xBB\xBFv 1 2 3\n";
+  while (big.size() < (std::size_t(1) << 20) + 7) big += "v 0.5 0.25 0.125\n";
+  test::write_file(dir + "/big.obj", big);
+  test::write_file(dir + "/small.obj", "v 1 2 3\n");
+  const TextFile mapped(dir + "/big.obj");
+  EXPECT_TRUE(mapped.mapped());
+  EXPECT_EQ(mapped.text(), read_text_file(dir + "/big.obj")) << "the UTF-8 byte-order mark is dropped too";
+  const TextFile small(dir + "/small.obj");
+  EXPECT_FALSE(small.mapped());
+  EXPECT_EQ(small.text(), "v 1 2 3\n");
+  TextFile moved(TextFile(dir + "/small.obj"));
+  EXPECT_EQ(moved.text(), "v 1 2 3\n");
+}
+
+// Binary data, UTF-16 and the size limit get read_text_file's messages when mapped too.
+TEST(TextFile, MappedFilesGetTheSameErrors) {
+  const std::string dir = test::temp_dir("text_file_map_errors");
+  std::string nul(std::size_t(1) << 21, 'v');
+  for (std::size_t i = 99; i < nul.size(); i += 100) nul[i] = '\n';
+  nul[1500000] = '\0';
+  test::write_file(dir + "/nul.obj", nul);
+  test::write_file(dir + "/utf16.obj", "\xFF\xFE" + std::string(std::size_t(1) << 20, 'v'));
+  for (const char* name : {"/nul.obj", "/utf16.obj"}) {
+    const std::string message = mapped_error_of(dir + name);
+    EXPECT_FALSE(message.empty()) << name;
+    EXPECT_EQ(message, error_of(dir + name));
+  }
+  InputLimit limit("1");
+  EXPECT_NE(mapped_error_of(dir + "/nul.obj").find("is larger than the 1 MB input limit"), std::string::npos);
+}
+
+// A mapped file that shrinks under the reader ends the process with a message and status 1, not
+// a crash by SIGBUS.
+TEST(TextFile, TruncatedWhileMappedEndsWithAMessage) {
+  const std::string dir = test::temp_dir("text_file_truncated");
+  const std::string path = dir + "/shrinks.obj";
+  test::write_file(path, std::string(std::size_t(3) << 20, 'v'));
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        const TextFile file(path);
+        if (truncate(path.c_str(), 0) != 0) std::_Exit(3);
+        volatile char last = file.text()[file.text().size() - 1];
+        (void)last;
+        std::_Exit(4);
+      },
+      testing::ExitedWithCode(1), "shrinks.obj was truncated while it was being read");
+}
+
 }  // namespace
 }  // namespace rayvec
