@@ -127,7 +127,7 @@ int run(const Options& o) {
   const StageLine stages("bench rays");
   const Progress progress = stages.progress();
   progress("loading " + o.model);
-  const ObjModel model = load_obj(o.model);
+  const ObjModel model = load_obj(o.model, ObjLoadOptions{.available_threads = threads});
   const TriangleMesh& mesh = model.mesh;
 
   BvhOptions bvh_options;

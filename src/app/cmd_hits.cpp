@@ -33,7 +33,7 @@ int run_hits(const HitsArgs& args) {
   const TraceConfig config = resolve_trace_options(args.trace);
   const AccelKind kind = resolve_accel(args.trace);
   const bool cuda = resolve_device(args.device, config.intersector);
-  const ObjModel model = load_obj(args.mesh);
+  const ObjModel model = load_obj(args.mesh, ObjLoadOptions{.available_threads = omp_get_max_threads()});
   for (const std::string& w : model.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   // Under mpirun rank 0 reads the rays and writes the answers (its share of the rays goes to each rank).
   const bool root = cluster().root();

@@ -104,7 +104,7 @@ int run_render(RenderArgs& a) {
   RenderStats stats;
 
   auto t = std::chrono::steady_clock::now();
-  Scene scene = load_scene(a.scene);
+  Scene scene = load_scene(a.scene, requested_threads(a.trace));
   apply_scene_overrides(a.overrides, scene);
   scene.render.aov = aov;
   const RenderSettings& settings = scene.render;

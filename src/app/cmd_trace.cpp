@@ -43,7 +43,7 @@ std::pair<int, int> parse_pixel(const std::string& text, const Camera& cam) {
 }
 
 int run_trace(TraceArgs& a) {
-  Scene scene = load_scene(a.scene);
+  Scene scene = load_scene(a.scene, requested_threads(a.trace));
   apply_scene_overrides(a.overrides, scene);
   const auto [x, y] = parse_pixel(a.pixel, scene.camera);
   const int spp = std::max(1, scene.render.spp);

@@ -13,7 +13,9 @@ void add_trace_options(Command& cmd, TraceOptions& options, bool with_accel) {
               "ray-triangle arithmetic: mt (float, no epsilon), mt64 (double), paper "
               "(Sena et al. 2018: |det| < 1e-6 culled, t > 1e-6), watertight (Woop et al. 2013: no ray "
               "slips between triangles of a closed mesh), watertight64 (the same in double)")
-      .option("--threads", options.threads, "OpenMP threads, 0 to 1024 (0 = all cores)");
+      .option("--threads", options.threads,
+              "threads for tracing (OpenMP) and, with 2 or more, for reading an OBJ of 16 MiB and up; 0 to "
+              "1024 (0 = all cores)");
   if (with_accel)
     cmd.option("--accel", options.accel,
                "acceleration structure: bvh (default; wide SAH BVH) or brute (every triangle, the "
@@ -38,6 +40,10 @@ TraceConfig resolve_trace_options(const TraceOptions& options) {
   check_threads_option(options.threads);
   if (options.threads > 0) omp_set_num_threads(options.threads);
   return config;
+}
+
+int requested_threads(const TraceOptions& options) {
+  return options.threads > 0 ? options.threads : omp_get_max_threads();
 }
 
 AccelKind resolve_accel(const TraceOptions& options) {

@@ -29,6 +29,10 @@ void add_trace_options(Command& cmd, TraceOptions& options, bool with_accel);
 // Validates the values (InputError on a bad one, saying what is allowed), applies --threads to
 // OpenMP and returns the configuration.
 TraceConfig resolve_trace_options(const TraceOptions& options);
+
+// The threads --threads asks for (all of OpenMP's when 0), for work done before
+// resolve_trace_options applies it, such as loading the scene.
+int requested_threads(const TraceOptions& options);
 AccelKind resolve_accel(const TraceOptions& options);
 
 }  // namespace rayvec

@@ -135,7 +135,11 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
                                         std::string& mtl_warn, std::string& mtl_err) {
     return mtl_reader(file, &materials, &by_name, &mtl_warn, &mtl_err);
   };
-  clock.fast = !options.reference && load_obj_fast(text, options.threads, load_mtl, model, warn, err);
+  const int threads = options.threads > 0                                                   ? options.threads
+                      : options.available_threads >= 2 && text.size() >= kObjTwoThreadsFrom ? 2
+                                                                                            : 1;
+  clock.threads = threads;
+  clock.fast = !options.reference && load_obj_fast(text, threads, load_mtl, model, warn, err);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   if (!clock.fast) {

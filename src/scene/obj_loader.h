@@ -2,6 +2,7 @@
 // obj_loader.cpp is the only file that includes tiny_obj_loader.h.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -26,9 +27,15 @@ struct ObjModel {
 
 // How load_obj reads: rayvec's fast reader where the file allows (obj_fast.h), else tinyobjloader.
 struct ObjLoadOptions {
-  int threads = 0;         // the fast reader's threads (pieces of the file); 0: one
+  int threads = 0;  // the fast reader's threads (pieces of the file); 0: by available_threads
+  // The threads the caller may use (its --threads): with two or more, a file of kObjTwoThreadsFrom
+  // bytes and more is parsed in two pieces on two threads, a smaller one on one.
+  int available_threads = 1;
   bool reference = false;  // tinyobjloader only: the reference the fast reader is tested against
 };
+
+// From this size two threads parse an OBJ faster than one (benchmarks.md#decision-obj-fast-path).
+inline constexpr std::size_t kObjTwoThreadsFrom = std::size_t(16) << 20;
 
 // Seconds per phase of one load_obj, for `rayvec bench obj`.
 struct ObjLoadTimes {
@@ -37,6 +44,7 @@ struct ObjLoadTimes {
   double parse = 0;    // the fast reader, or tinyobjloader
   double convert = 0;  // tinyobjloader's output into an ObjModel, and the materials
   bool fast = false;   // whether the fast reader took the file
+  int threads = 1;     // the threads (pieces) the fast reader was given
 };
 
 // Loads and validates `path`. Throws InputError (`file:line: what is wrong`) for a missing or

@@ -109,8 +109,9 @@ struct Scene {
 void frame_bounding_box(Scene& scene);
 
 // Loads `path`: a JSON scene (.json) or a bare Wavefront OBJ (.obj, framed by frame_bounding_box).
-// Throws InputError (exit 2) naming the file and the problem.
-Scene load_scene(const std::string& path);
-Scene load_scene_json(const std::string& path);
+// Throws InputError (exit 2) naming the file and the problem. `threads`: how many the loading may
+// use (ObjLoadOptions::available_threads), the command's --threads.
+Scene load_scene(const std::string& path, int threads = 1);
+Scene load_scene_json(const std::string& path, int threads = 1);
 
 }  // namespace rayvec

@@ -251,7 +251,7 @@ class DuplicateKeys {
   int occurrence_ = 0;
 };
 
-Scene load_scene_json(const std::string& path) {
+Scene load_scene_json(const std::string& path, int threads) {
   const std::string text = read_text_file(path);  // bounded; rejects binary data and UTF-16
   json root;
   try {
@@ -304,7 +304,7 @@ Scene load_scene_json(const std::string& path) {
     const MaterialOverride m =
         o.contains("material") ? read_material(r, o["material"], where + ".material") : MaterialOverride{};
     const std::size_t first_vertex = scene.mesh.positions.size();
-    scene.add_object(load_obj(obj), t, m);
+    scene.add_object(load_obj(obj, ObjLoadOptions{.available_threads = threads}), t, m);
     for (std::size_t v = first_vertex; v < scene.mesh.positions.size(); ++v)
       if (!point_in_range(scene.mesh.positions[v])) {
         const Vec3f p = scene.mesh.positions[v];
@@ -346,14 +346,14 @@ Scene checked_size(Scene scene, const std::string& path) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, int threads) {
   std::string ext = fs::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".json") return checked_size(load_scene_json(path), path);
+  if (ext == ".json") return checked_size(load_scene_json(path, threads), path);
   if (ext == ".obj") {
     Scene scene;
     scene.source = path;
-    scene.add_object(load_obj(path), Transform{});
+    scene.add_object(load_obj(path, ObjLoadOptions{.available_threads = threads}), Transform{});
     scene = checked_size(std::move(scene), path);
     frame_bounding_box(scene);
     return scene;

@@ -165,5 +165,36 @@ TEST(ObjLoader, MissingMtlIsAWarningNotAnError) {
   EXPECT_TRUE(found);
 }
 
+// A file of kObjTwoThreadsFrom bytes and more is parsed on two threads when the caller may use two,
+// with the same result as on one; a smaller file, or a caller with one thread, uses one.
+TEST(ObjLoader, BigFilesUseTwoThreadsWhenTheCallerHasThem) {
+  const std::string dir = test::temp_dir("obj_two_threads");
+  std::string big;
+  big.reserve(kObjTwoThreadsFrom + 4096);
+  int rows = 0;
+  for (; big.size() < kObjTwoThreadsFrom; ++rows)
+    for (int x = 0; x < 100; ++x)
+      big += "v " + std::to_string(x) + ".125 " + std::to_string(rows) + ".5 0.0625\n";
+  for (int r = 0; r + 1 < rows; ++r)
+    for (int x = 0; x + 1 < 100; ++x) {
+      const int a = r * 100 + x + 1, b = a + 1, c = a + 100;
+      big += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+    }
+  test::write_file(dir + "/big.obj", big);
+  test::write_file(dir + "/small.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+
+  ObjLoadTimes two, one, small;
+  const ObjModel a = load_obj(dir + "/big.obj", ObjLoadOptions{.available_threads = 2}, &two);
+  const ObjModel b = load_obj(dir + "/big.obj", ObjLoadOptions{.available_threads = 1}, &one);
+  load_obj(dir + "/small.obj", ObjLoadOptions{.available_threads = 8}, &small);
+  EXPECT_TRUE(two.fast);
+  EXPECT_EQ(two.threads, 2);
+  EXPECT_EQ(one.threads, 1);
+  EXPECT_EQ(small.threads, 1);
+  ASSERT_EQ(a.mesh.size(), std::size_t(rows - 1) * 99);
+  EXPECT_EQ(a.mesh.positions, b.mesh.positions);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+}
+
 }  // namespace
 }  // namespace rayvec
