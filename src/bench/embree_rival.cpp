@@ -15,12 +15,6 @@ namespace {
 
 #ifdef RAYVEC_HAVE_EMBREE
 
-#ifdef RAYVEC_EMBREE_MODULE_DIR
-constexpr const char* kBuildDir = RAYVEC_EMBREE_MODULE_DIR;
-#else
-constexpr const char* kBuildDir = nullptr;
-#endif
-
 struct Module {
   RayvecEmbreeBuildFn build = nullptr;
   RayvecEmbreeClosestFn closest = nullptr;
@@ -32,11 +26,9 @@ struct Module {
 
 Module load() {
   Module m;
-  const Plugin p = open_plugin("RAYVEC_EMBREE_MODULE", kEmbreeModuleName, kBuildDir, /*global=*/false);
+  const Plugin p = open_plugin("RAYVEC_EMBREE_MODULE", kEmbreeModuleName, /*global=*/false);
   if (!p.handle) {
-    m.error =
-        plugin_problem(p, kEmbreeModuleName,
-                       "; it is built beside the rayvec binary, or set RAYVEC_EMBREE_MODULE to its path");
+    m.error = plugin_problem(p, kEmbreeModuleName, "RAYVEC_EMBREE_MODULE");
     return m;
   }
   const auto abi = reinterpret_cast<RayvecEmbreeAbiFn>(plugin_symbol(p, "rayvec_embree_abi"));

@@ -7,12 +7,6 @@
 namespace rayvec {
 namespace {
 
-#ifdef RAYVEC_MPI_MODULE_DIR
-constexpr const char* kBuildDir = RAYVEC_MPI_MODULE_DIR;
-#else
-constexpr const char* kBuildDir = nullptr;
-#endif
-
 template <class Fn>
 void bind(const Plugin& plugin, const char* name, Fn& fn) {
   fn = reinterpret_cast<Fn>(plugin_symbol(plugin, name));
@@ -24,7 +18,7 @@ MpiModule load_mpi_module() {
   MpiModule m;
   // RTLD_GLOBAL: OpenMPI's own plugins, loaded by MPI_Init, resolve symbols of libmpi through the
   // global scope.
-  const Plugin p = open_plugin("RAYVEC_MPI_MODULE", kMpiModuleName, kBuildDir, /*global=*/true);
+  const Plugin p = open_plugin("RAYVEC_MPI_MODULE", kMpiModuleName, /*global=*/true);
   if (!p.handle) {
     m.error = plugin_problem(p, kMpiModuleName,
                              ": this rayvec was built without MPI; configure with -DRAYVEC_MPI=ON "

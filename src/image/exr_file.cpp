@@ -21,12 +21,6 @@ namespace {
 constexpr int kStripRows = 64;  // scanlines decoded per read_rows call
 constexpr std::size_t kErrorSize = 8192;
 
-#ifdef RAYVEC_EXR_MODULE_DIR
-constexpr const char* kBuildDir = RAYVEC_EXR_MODULE_DIR;
-#else
-constexpr const char* kBuildDir = nullptr;
-#endif
-
 struct Module {
   const RayvecExrModule* table = nullptr;  // null when it could not be loaded
   std::string error;                       // why
@@ -34,10 +28,9 @@ struct Module {
 
 Module load() {
   Module m;
-  const Plugin p = open_plugin("RAYVEC_EXR_MODULE", kExrModuleName, kBuildDir, /*global=*/false);
+  const Plugin p = open_plugin("RAYVEC_EXR_MODULE", kExrModuleName, /*global=*/false);
   if (!p.handle) {
-    m.error = plugin_problem(p, kExrModuleName,
-                             "; it is built beside the rayvec binary, or set RAYVEC_EXR_MODULE to its path");
+    m.error = plugin_problem(p, kExrModuleName, "RAYVEC_EXR_MODULE");
     return m;
   }
   const auto entry = reinterpret_cast<RayvecExrModuleFn>(plugin_symbol(p, "rayvec_exr_module"));

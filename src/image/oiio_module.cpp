@@ -21,19 +21,12 @@ struct Module {
   std::string error;  // why it could not be loaded
 };
 
-#ifdef RAYVEC_OIIO_MODULE_DIR
-constexpr const char* kBuildDir = RAYVEC_OIIO_MODULE_DIR;
-#else
-constexpr const char* kBuildDir = nullptr;
-#endif
-
 Module load() {
   Module m;
-  const Plugin p = open_plugin("RAYVEC_OIIO_MODULE", kOiioModuleName, kBuildDir, /*global=*/false);
+  const Plugin p = open_plugin("RAYVEC_OIIO_MODULE", kOiioModuleName, /*global=*/false);
   m.handle = p.handle;
   if (!p.handle) {
-    m.error = plugin_problem(p, kOiioModuleName,
-                             "; it is built beside the rayvec binary, or set RAYVEC_OIIO_MODULE to its path");
+    m.error = plugin_problem(p, kOiioModuleName, "RAYVEC_OIIO_MODULE");
     return m;
   }
   auto abi = reinterpret_cast<RayvecOiioAbiFn>(plugin_symbol(p, "rayvec_oiio_abi"));

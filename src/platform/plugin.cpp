@@ -10,13 +10,21 @@
 namespace rayvec {
 namespace {
 
-std::vector<std::string> candidate_paths(const char* env_var, const char* file_name, const char* build_dir) {
+// Where the build put every module (beside the binary it built): RAYVEC_MODULE_DIR, set on this file
+// by the build.
+#ifdef RAYVEC_MODULE_DIR
+constexpr const char* kBuildDir = RAYVEC_MODULE_DIR;
+#else
+constexpr const char* kBuildDir = nullptr;
+#endif
+
+std::vector<std::string> candidate_paths(const char* env_var, const char* file_name) {
   if (const char* env = std::getenv(env_var); env && *env) return {env};  // the user's choice only
   std::vector<std::string> paths;
   std::error_code ec;
   const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) paths.push_back((exe.parent_path() / file_name).string());
-  if (build_dir) paths.push_back(std::string(build_dir) + "/" + file_name);
+  if (kBuildDir) paths.push_back(std::string(kBuildDir) + "/" + file_name);
   return paths;
 }
 
@@ -27,9 +35,15 @@ std::string plugin_problem(const Plugin& p, const char* file_name, const std::st
   return std::string(file_name) + " not found (looked for " + p.tried + ")" + hint;
 }
 
-Plugin open_plugin(const char* env_var, const char* file_name, const char* build_dir, bool global) {
+std::string plugin_problem(const Plugin& p, const char* file_name, const char* env_var) {
+  return plugin_problem(
+      p, file_name,
+      std::string("; it is built beside the rayvec binary, or set ") + env_var + " to its path");
+}
+
+Plugin open_plugin(const char* env_var, const char* file_name, bool global) {
   Plugin p;
-  for (const std::string& path : candidate_paths(env_var, file_name, build_dir)) {
+  for (const std::string& path : candidate_paths(env_var, file_name)) {
     p.tried += (p.tried.empty() ? "" : ", ") + path;
     if (::access(path.c_str(), F_OK) != 0) continue;
     p.path = path;

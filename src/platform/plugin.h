@@ -15,11 +15,13 @@ struct Plugin {
 };
 
 // `global`: RTLD_GLOBAL, for modules whose own plugins resolve symbols through the global scope.
-Plugin open_plugin(const char* env_var, const char* file_name, const char* build_dir, bool global);
+Plugin open_plugin(const char* env_var, const char* file_name, bool global);
 
 // Why `p`, opened by open_plugin(…, file_name, …), did not load: dlopen's error, or
 // "FILE not found (looked for …)" followed by `hint` (how to get or point to the module).
 std::string plugin_problem(const Plugin& p, const char* file_name, const std::string& hint);
+// The same with the usual hint: the module is built beside the binary, or `env_var` names it.
+std::string plugin_problem(const Plugin& p, const char* file_name, const char* env_var);
 
 // dlsym: the symbol's address, or null.
 void* plugin_symbol(const Plugin& plugin, const char* name);
