@@ -41,7 +41,10 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
   }
   BinaryBvh binary = build_binned_sah(mesh, sah);
   align_leaves(binary, uint32_t(kernels_->width));
-  tree_ = WideBvh(binary, traversal_->width);
+  const auto merge_slots =
+      std::min(uint32_t(std::max(options.merge_steps, 0)) * uint32_t(kernels_->width), kMaxLeafTriangles);
+  tree_ = WideBvh(binary, traversal_->width, CollapseRule::lower_sah_cost, merge_slots);
+  sort_leaf_slots(tree_, binary.order);
   tree_.set_box_epsilon(options.box_epsilon);
   tris_ = TriangleSoA(mesh, binary.order);
 }

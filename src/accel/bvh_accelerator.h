@@ -18,7 +18,11 @@ struct BvhOptions {
   // kernel-width block of triangles and up to two blocks per leaf (AVX-512: 16 and 32, AVX2: 8 and
   // 16; scalar keeps sah's 4 and 8). false: use sah.max_leaf and sah.leaf_block as given.
   bool leaves_from_kernel = true;
-  int width = 0;                           // children per node: 0 = default_bvh_width(isa, triangles)
+  int width = 0;  // children per node: 0 = default_bvh_width(isa, triangles)
+  // A subtree that a full node leaves as its child becomes one leaf when its triangles fit in this
+  // many kernel steps (at most 32 slots; 0: never): a leaf test instead of a node of 2–4 leaves
+  // (benchmarks.md#decision-merged-leaves).
+  int merge_steps = 3;
   float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
   // The traversals call the float `mt` or `watertight` leaf kernel directly (1) or through the
   // kernel table (0); −1 = default_direct_leaf(isa, this CPU's vendor, intersector). Other

@@ -33,7 +33,8 @@ struct Options {
   int repeats = 5, width = 0;
   int max_leaf = 0, leaf_block = 0;  // 0: the builder's defaults
   int direct_leaf = -1;              // -1: default_direct_leaf
-  int builds = 3;                    // builds timed; the median is reported
+  int merge_steps = BvhOptions{}.merge_steps;
+  int builds = 3;  // builds timed; the median is reported
 };
 
 std::string json_array(const std::vector<double>& v) {
@@ -140,6 +141,9 @@ int run(const Options& o) {
   }
   if (o.direct_leaf < -1 || o.direct_leaf > 1) throw InputError("--direct-leaf: must be -1, 0 or 1");
   bvh_options.direct_leaf = o.direct_leaf;
+  if (o.merge_steps < 0 || o.merge_steps > int(kMaxLeafTriangles))
+    throw InputError("--merge-steps: must be 0 to " + std::to_string(kMaxLeafTriangles));
+  bvh_options.merge_steps = o.merge_steps;
   if (o.leaf_block != 0) {
     if (o.leaf_block < 1 || o.leaf_block > 32) throw InputError("--leaf-block: must be 1 to 32");
     bvh_options.sah.leaf_block = uint32_t(o.leaf_block);
@@ -278,6 +282,9 @@ void register_bench_rays_command(Command& bench) {
               "triangles up, else 8; AVX-512 on Intel: 16 at every size)")
       .option("--max-leaf", o.max_leaf, "tuning: most triangles per BVH leaf (0 = default)")
       .option("--leaf-block", o.leaf_block, "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)")
+      .option("--merge-steps", o.merge_steps,
+              "tuning: a subtree whose triangles fit in this many leaf-kernel steps (at most 32 "
+              "slots) becomes one leaf instead of a node of its own; 0 = never (default 3)")
       .option("--direct-leaf", o.direct_leaf,
               "tuning: closest-hit traversal calls the mt leaf kernel directly (1) or through the "
               "kernel table (0); -1 = default (directly on AVX2 and on Intel's AVX-512)");

@@ -7,6 +7,15 @@
 #include "kernels/triangle_soa.h"
 
 namespace rayvec {
+namespace {
+
+// Kernel steps covering `count` slots from `first`: the kernels step through aligned groups of
+// `step` slots, masking the lanes outside the leaf.
+uint32_t steps_from(uint32_t first, uint32_t count, uint32_t step) {
+  return (first % step + count + step - 1) / step;
+}
+
+}  // namespace
 
 void align_leaves(BinaryBvh& tree, uint32_t step) {
   if (step <= 1 || tree.nodes.empty()) return;
@@ -19,7 +28,9 @@ void align_leaves(BinaryBvh& tree, uint32_t step) {
   order.reserve(tree.order.size() + leaves.size() * (step - 1));
   for (const auto& [first, k] : leaves) {
     BinaryNode& leaf = tree.nodes[k];
-    while (order.size() % step != 0) order.push_back(TriangleSoA::kPaddingSlot);
+    const auto here = uint32_t(order.size());
+    if (steps_from(here, leaf.count, step) > steps_from(0, leaf.count, step))
+      while (order.size() % step != 0) order.push_back(TriangleSoA::kPaddingSlot);
     leaf.first = uint32_t(order.size());
     order.insert(order.end(), tree.order.begin() + first, tree.order.begin() + first + leaf.count);
   }

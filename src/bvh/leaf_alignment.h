@@ -1,7 +1,9 @@
-// Leaf alignment: moves every leaf of a BinaryBvh to start on a multiple of the triangle kernel's
-// SIMD width, so that a leaf's first step loads its own triangles instead of a masked step that
-// begins in the previous leaf (TriangleSoA's rows are blocked, triangle_soa.h). The gaps become
-// padding slots (TriangleSoA::kPaddingSlot: zero area, id −1) that no leaf range covers.
+// Leaf alignment: places the leaves of a BinaryBvh so that each takes as few steps of the triangle
+// kernel as its size needs. The kernels step through aligned groups of `step` slots (TriangleSoA's
+// rows are blocked, triangle_soa.h), masking lanes outside the leaf: a leaf that fits in what is
+// left of the current step starts there, sharing the step with the leaf before it; otherwise it
+// starts on the next multiple of `step`. The gaps become padding slots (TriangleSoA::kPaddingSlot:
+// zero area, id −1) that no binary leaf covers (a merged leaf of the wide BVH may: wide_bvh.h).
 #pragma once
 #include <cstdint>
 
@@ -9,9 +11,9 @@
 
 namespace rayvec {
 
-// Rewrites tree.order (inserting kPaddingSlot entries) and every leaf's `first` so each leaf
-// begins at a multiple of `step` (a power of two; 1 leaves the tree unchanged). Leaves keep their
-// triangles and their order.
+// Rewrites tree.order (inserting kPaddingSlot entries) and every leaf's `first` so each leaf of
+// n triangles lies in ceil(n / step) aligned groups of `step` slots (a power of two; 1 leaves the
+// tree unchanged). Leaves keep their triangles and their order.
 void align_leaves(BinaryBvh& tree, uint32_t step);
 
 }  // namespace rayvec

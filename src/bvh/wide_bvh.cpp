@@ -19,10 +19,43 @@ namespace {
 
 constexpr std::size_t kParallelCollapseNodes = 256;  // binary nodes
 
+// The slots a binary subtree's leaves lie in: [begin, end) from its first leaf's first slot to its
+// last leaf's end (leaves are in tree order, so nothing else lies between them but padding).
+struct SlotSpan {
+  uint32_t begin, end;
+};
+
+// spans[k] for every binary node k, children before parents (iterative post-order: the binary
+// tree may be deep).
+std::vector<SlotSpan> subtree_spans(const BinaryBvh& tree) {
+  const std::vector<BinaryNode>& nodes = tree.nodes;
+  std::vector<SlotSpan> spans(nodes.size());
+  if (nodes.empty()) return spans;
+  std::vector<std::pair<uint32_t, bool>> stack{{0, false}};
+  while (!stack.empty()) {
+    const auto [k, children_done] = stack.back();
+    stack.pop_back();
+    const BinaryNode& n = nodes[k];
+    if (n.leaf()) {
+      spans[k] = {n.first, n.first + n.count};
+    } else if (children_done) {
+      const SlotSpan a = spans[n.first], b = spans[n.first + 1];
+      spans[k] = {std::min(a.begin, b.begin), std::max(a.end, b.end)};
+    } else {
+      stack.push_back({k, true});
+      stack.push_back({n.first, false});
+      stack.push_back({n.first + 1, false});
+    }
+  }
+  return spans;
+}
+
 template <int N>
 class Collapser {
  public:
-  Collapser(const BinaryBvh& tree, CollapseRule rule) : tree_(tree), rule_(rule) {
+  Collapser(const BinaryBvh& tree, CollapseRule rule, const std::vector<SlotSpan>& spans,
+            uint32_t merge_slots)
+      : tree_(tree), rule_(rule), spans_(spans), merge_slots_(merge_slots) {
     if (rule == CollapseRule::most_triangles) count_triangles();
   }
 
@@ -31,8 +64,8 @@ class Collapser {
     clear(nodes_[0]);
     if (!tree_.nodes.empty()) {
       const BinaryNode& root = tree_.nodes[0];
-      if (root.leaf()) {
-        set_child(0, 0, root.box, leaf_ref(root));
+      if (root.leaf() || mergeable(0)) {
+        set_child(0, 0, root.box, root.leaf() ? leaf_ref(root) : merged_leaf_ref(0));
         depth_ = 1;
       } else {
         fill(0, 0, 1);
@@ -71,6 +104,15 @@ class Collapser {
     if (leaf.count > kMaxLeafTriangles) throw std::logic_error("BVH leaf larger than 32 triangles");
     ++leaves_;
     return kLeafFlag | (leaf.first << 5) | (leaf.count - 1);
+  }
+
+  // Whether inner binary node k becomes one leaf over its slot span (see WideBvh's constructor).
+  bool mergeable(uint32_t k) const {
+    return merge_slots_ != 0 && spans_[k].end - spans_[k].begin <= merge_slots_;
+  }
+  uint32_t merged_leaf_ref(uint32_t k) {
+    ++leaves_;
+    return kLeafFlag | (spans_[k].begin << 5) | (spans_[k].end - spans_[k].begin - 1);
   }
 
   // triangles_[k]: the triangles under binary node k, children before parents (iterative post-order:
@@ -129,6 +171,8 @@ class Collapser {
       const BinaryNode& c = tree_.nodes[kids[k]];
       if (c.leaf()) {
         set_child(w, k, c.box, leaf_ref(c));
+      } else if (mergeable(kids[k])) {
+        set_child(w, k, c.box, merged_leaf_ref(kids[k]));
       } else {
         const auto child = static_cast<uint32_t>(nodes_.size());
         nodes_.emplace_back();
@@ -141,6 +185,8 @@ class Collapser {
 
   const BinaryBvh& tree_;
   const CollapseRule rule_;
+  const std::vector<SlotSpan>& spans_;  // empty without merging
+  const uint32_t merge_slots_;
   std::vector<uint32_t> triangles_;  // most_triangles only
   std::vector<WideNode<N>> nodes_;
   uint32_t depth_ = 0, leaves_ = 0;
@@ -149,11 +195,12 @@ class Collapser {
 
 // The nodes in a LargeBuffer (huge pages for big trees: fewer TLB misses per node fetch).
 template <int N>
-LargeBuffer collapse(const BinaryBvh& tree, CollapseRule rule, uint32_t& count, uint32_t& depth,
-                     uint32_t& leaves, double& sah_cost, std::size_t& bytes) {
+LargeBuffer collapse(const BinaryBvh& tree, CollapseRule rule, uint32_t merge_slots, uint32_t& count,
+                     uint32_t& depth, uint32_t& leaves, double& sah_cost, std::size_t& bytes) {
+  const std::vector<SlotSpan> spans = merge_slots != 0 ? subtree_spans(tree) : std::vector<SlotSpan>{};
   std::vector<WideNode<N>> nodes;
   if (rule != CollapseRule::lower_sah_cost) {
-    nodes = Collapser<N>(tree, rule).run(depth, leaves, sah_cost);
+    nodes = Collapser<N>(tree, rule, spans, merge_slots).run(depth, leaves, sah_cost);
   } else {
     double by_count = 0;
     uint32_t depth_count = 0, leaves_count = 0;
@@ -163,9 +210,10 @@ LargeBuffer collapse(const BinaryBvh& tree, CollapseRule rule, uint32_t& count, 
 #pragma omp parallel sections if (tree.nodes.size() >= kParallelCollapseNodes)
     {
 #pragma omp section
-      nodes = Collapser<N>(tree, CollapseRule::largest_area).run(depth, leaves, sah_cost);
+      nodes = Collapser<N>(tree, CollapseRule::largest_area, spans, merge_slots).run(depth, leaves, sah_cost);
 #pragma omp section
-      other = Collapser<N>(tree, CollapseRule::most_triangles).run(depth_count, leaves_count, by_count);
+      other = Collapser<N>(tree, CollapseRule::most_triangles, spans, merge_slots)
+                  .run(depth_count, leaves_count, by_count);
     }
     if (by_count < sah_cost) {
       nodes = std::move(other);
@@ -193,15 +241,17 @@ void root_box(BvhArrays& a) {
 
 }  // namespace
 
-WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule) {
+WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule, uint32_t merge_slots) {
   if (tree.order.size() >= kMaxLeafBegin)
     throw std::length_error("BVH: at most 2^26 - 1 triangles are supported");
+  if (merge_slots > kMaxLeafTriangles)
+    throw std::invalid_argument("BVH: merged leaves hold at most 32 slots");
   uint32_t count = 0;
   LargeBuffer p;
   switch (width) {
-    case 4: p = collapse<4>(tree, rule, count, depth_, leaves_, sah_cost_, bytes_); break;
-    case 8: p = collapse<8>(tree, rule, count, depth_, leaves_, sah_cost_, bytes_); break;
-    case 16: p = collapse<16>(tree, rule, count, depth_, leaves_, sah_cost_, bytes_); break;
+    case 4: p = collapse<4>(tree, rule, merge_slots, count, depth_, leaves_, sah_cost_, bytes_); break;
+    case 8: p = collapse<8>(tree, rule, merge_slots, count, depth_, leaves_, sah_cost_, bytes_); break;
+    case 16: p = collapse<16>(tree, rule, merge_slots, count, depth_, leaves_, sah_cost_, bytes_); break;
     default: throw std::invalid_argument("BVH width must be 4, 8 or 16");
   }
   storage_ = std::move(p);
@@ -211,6 +261,28 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule) {
     case 4: root_box<4>(arrays_); break;
     case 8: root_box<8>(arrays_); break;
     default: root_box<16>(arrays_); break;
+  }
+}
+
+namespace {
+template <int N>
+void sort_leaves(const BvhArrays& a, std::vector<uint32_t>& order) {
+  const auto* nodes = static_cast<const WideNode<N>*>(a.nodes);
+  for (uint32_t n = 0; n < a.node_count; ++n)
+    for (const uint32_t ref : nodes[n].ref) {
+      if (ref == kEmptyRef || !(ref & kLeafFlag)) continue;
+      const uint32_t begin = (ref >> 5) & (kMaxLeafBegin - 1), end = begin + (ref & 31u) + 1;
+      const auto first = order.begin() + begin, last = order.begin() + end;
+      if (!std::is_sorted(first, last)) std::sort(first, last);  // kPaddingSlot is the largest
+    }
+}
+}  // namespace
+
+void sort_leaf_slots(const WideBvh& tree, std::vector<uint32_t>& order) {
+  switch (tree.width()) {
+    case 4: sort_leaves<4>(tree.arrays(), order); break;
+    case 8: sort_leaves<8>(tree.arrays(), order); break;
+    default: sort_leaves<16>(tree.arrays(), order); break;
   }
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <vector>
 
 #include "bvh/binary_bvh.h"
 #include "platform/large_buffer.h"
@@ -54,9 +55,14 @@ class WideBvh {
  public:
   WideBvh() = default;
   // Collapses `tree` (leaves of at most kMaxLeafTriangles) into nodes of `width` ∈ {4, 8, 16}
-  // children by `rule` (wide_bvh.cpp says why the default runs both). Throws std::length_error
-  // when there are 2^26 or more triangles.
-  WideBvh(const BinaryBvh& tree, int width, CollapseRule rule = CollapseRule::lower_sah_cost);
+  // children by `rule` (wide_bvh.cpp says why the default runs both). With merge_slots > 0, an
+  // inner binary node that a full wide node leaves as its child, and whose leaves all lie within
+  // merge_slots consecutive slots, becomes one leaf over those slots instead of a wide node of its
+  // own (such nodes held 2–4 leaves); the range may then cover padding slots between its leaves
+  // (zero area, id −1: no kernel reports them). Throws std::length_error when there are 2^26 or
+  // more triangles, std::invalid_argument when merge_slots exceeds kMaxLeafTriangles.
+  WideBvh(const BinaryBvh& tree, int width, CollapseRule rule = CollapseRule::lower_sah_cost,
+          uint32_t merge_slots = 0);
 
   const BvhArrays& arrays() const { return arrays_; }
   int width() const { return int(arrays_.width); }
@@ -78,5 +84,11 @@ class WideBvh {
   std::size_t bytes_ = 0;
   double sah_cost_ = 0;
 };
+
+// Sorts the triangle ids of each leaf's slot range in `order` (the tree's BinaryBvh::order), padding
+// slots last. A merged leaf (WideBvh's merge_slots) joins the ranges of several binary leaves, each
+// sorted on its own; the kernels' tie rule (of equal t, the first slot wins) needs the whole range
+// sorted to return the lowest id, as brute force does. Other leaves are already sorted.
+void sort_leaf_slots(const WideBvh& tree, std::vector<uint32_t>& order);
 
 }  // namespace rayvec

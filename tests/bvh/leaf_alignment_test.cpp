@@ -1,8 +1,11 @@
-// align_leaves: every leaf starts on a multiple of the step, keeps its triangles in their order,
-// and only padding slots fill the gaps; the wide BVH built from the aligned tree still holds
+// align_leaves: every leaf takes as few kernel steps as its size needs (padding only where it would
+// otherwise straddle one more step, so small leaves share steps), keeps its triangles in their
+// order, and only padding slots fill the gaps; the wide BVH built from the aligned tree still holds
 // every triangle exactly once, and the TriangleSoA turns padding entries into id −1 slots.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "accel/bvh_accelerator.h"
@@ -24,7 +27,11 @@ std::vector<std::vector<uint32_t>> leaf_contents(const BinaryBvh& tree) {
   return out;
 }
 
-TEST(LeafAlignment, LeavesStartOnTheStepAndKeepTheirTriangles) {
+uint32_t steps(uint32_t first, uint32_t count, uint32_t step) {
+  return (first % step + count + step - 1) / step;
+}
+
+TEST(LeafAlignment, LeavesTakeTheFewestStepsAndKeepTheirTriangles) {
   const TriangleMesh mesh = test::random_soup(3000, 0.05f, 5);
   for (uint32_t step : {1u, 8u, 16u}) {
     BinaryBvh tree = build_binned_sah(mesh);
@@ -33,13 +40,21 @@ TEST(LeafAlignment, LeavesStartOnTheStepAndKeepTheirTriangles) {
     align_leaves(tree, step);
     EXPECT_EQ(leaf_contents(tree), before) << "step " << step;
     std::vector<int> covered(tree.order.size(), 0);
-    std::size_t unaligned = 0;
+    std::size_t extra_steps = 0, unaligned = 0, aligned_padding = 0, slots = 0;
+    std::vector<std::pair<uint32_t, uint32_t>> leaves;  // (first, count) in slot order
     for (const BinaryNode& n : tree.nodes) {
       if (!n.leaf()) continue;
+      leaves.emplace_back(n.first, n.count);
+      extra_steps += steps(n.first, n.count, step) - steps(0, n.count, step);
       unaligned += n.first % step != 0;
       for (uint32_t s = n.first; s < n.first + n.count; ++s) ++covered[s];
     }
-    EXPECT_EQ(unaligned, 0u) << "step " << step;
+    std::sort(leaves.begin(), leaves.end());
+    for (const auto& [first, count] : leaves) {  // the padding of every leaf aligned, for comparison
+      aligned_padding += (step - slots % step) % step;
+      slots += (step - slots % step) % step + count;
+    }
+    EXPECT_EQ(extra_steps, 0u) << "step " << step;
     std::size_t padding = 0;
     for (std::size_t s = 0; s < tree.order.size(); ++s) {
       const bool pad = tree.order[s] == TriangleSoA::kPaddingSlot;
@@ -49,6 +64,9 @@ TEST(LeafAlignment, LeavesStartOnTheStepAndKeepTheirTriangles) {
     EXPECT_EQ(tree.order.size() - padding, slots_before);
     if (step == 1) {
       EXPECT_EQ(padding, 0u);
+    } else {
+      EXPECT_GT(unaligned, 0u) << "step " << step << ": small leaves should share steps";
+      EXPECT_LT(padding, aligned_padding) << "step " << step;
     }
     if (step == 16) {
       EXPECT_GT(padding, 0u);  // 3000 random triangles do not tile 16-slot steps
@@ -76,7 +94,7 @@ TEST(LeafAlignment, PaddingSlotsBecomeZeroAreaSlotsWithoutId) {
 }
 
 // The default node width (bvh_traversal.h): 16 on the SIMD ISAs for deep trees, and on Intel's AVX-512
-// for every tree, 8 otherwise; and a BvhAccelerator's leaves start on its kernel's width.
+// for every tree, 8 otherwise; and a BvhAccelerator's leaves take the fewest steps of its kernel.
 TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
   for (const char* amd_or_other : {"AuthenticAMD", "HygonGenuine", ""}) {
     EXPECT_EQ(default_bvh_width(Isa::avx512, kWideNodeTriangles, amd_or_other), 16);
@@ -94,13 +112,16 @@ TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
   if (!isa_supported(Isa::avx512))
     GTEST_SKIP() << "no AVX-512 on this CPU: the built-BvhAccelerator half is skipped";
   const TriangleMesh big = test::random_soup(int(kWideNodeTriangles), 0.01f, 3);
-  const BvhAccelerator bvh(big, TraceConfig{Isa::avx512, Intersector::mt});
+  BvhOptions unmerged;  // merged leaves join several leaves' steps
+  unmerged.merge_steps = 0;
+  const BvhAccelerator bvh(big, TraceConfig{Isa::avx512, Intersector::mt}, unmerged);
   EXPECT_EQ(bvh.tree().width(), 16);
   const auto* nodes = static_cast<const WideNode<16>*>(bvh.tree().arrays().nodes);
   for (uint32_t n = 0; n < bvh.tree().node_count(); ++n)
     for (uint32_t ref : nodes[n].ref)
       if (ref != kEmptyRef && (ref & kLeafFlag)) {
-        ASSERT_EQ(((ref >> 5) & (kMaxLeafBegin - 1)) % 16, 0u);
+        const uint32_t count = (ref & 31) + 1;
+        ASSERT_EQ(steps((ref >> 5) & (kMaxLeafBegin - 1), count, 16), steps(0, count, 16));
       }
 }
 
