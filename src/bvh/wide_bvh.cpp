@@ -25,29 +25,40 @@ struct SlotSpan {
   uint32_t begin, end;
 };
 
-// spans[k] for every binary node k, children before parents (iterative post-order: the binary
-// tree may be deep).
-std::vector<SlotSpan> subtree_spans(const BinaryBvh& tree) {
+// out[k] for every binary node k: leaf(node) at leaves, combine(out[left], out[right]) above,
+// children before parents (iterative post-order: the binary tree may be deep).
+template <class T, class Leaf, class Combine>
+std::vector<T> fold_subtrees(const BinaryBvh& tree, Leaf leaf, Combine combine) {
   const std::vector<BinaryNode>& nodes = tree.nodes;
-  std::vector<SlotSpan> spans(nodes.size());
-  if (nodes.empty()) return spans;
+  std::vector<T> out(nodes.size());
+  if (nodes.empty()) return out;
   std::vector<std::pair<uint32_t, bool>> stack{{0, false}};
   while (!stack.empty()) {
     const auto [k, children_done] = stack.back();
     stack.pop_back();
     const BinaryNode& n = nodes[k];
     if (n.leaf()) {
-      spans[k] = {n.first, n.first + n.count};
+      out[k] = leaf(n);
     } else if (children_done) {
-      const SlotSpan a = spans[n.first], b = spans[n.first + 1];
-      spans[k] = {std::min(a.begin, b.begin), std::max(a.end, b.end)};
+      out[k] = combine(out[n.first], out[n.first + 1]);
     } else {
       stack.push_back({k, true});
       stack.push_back({n.first, false});
       stack.push_back({n.first + 1, false});
     }
   }
-  return spans;
+  return out;
+}
+
+std::vector<SlotSpan> subtree_spans(const BinaryBvh& tree) {
+  return fold_subtrees<SlotSpan>(
+      tree,
+      [](const BinaryNode& n) {
+        return SlotSpan{n.first, n.first + n.count};
+      },
+      [](SlotSpan a, SlotSpan b) {
+        return SlotSpan{std::min(a.begin, b.begin), std::max(a.end, b.end)};
+      });
 }
 
 template <int N>
@@ -115,27 +126,10 @@ class Collapser {
     return kLeafFlag | (spans_[k].begin << 5) | (spans_[k].end - spans_[k].begin - 1);
   }
 
-  // triangles_[k]: the triangles under binary node k, children before parents (iterative post-order:
-  // the binary tree may be deep).
+  // triangles_[k]: the triangles under binary node k.
   void count_triangles() {
-    const std::vector<BinaryNode>& nodes = tree_.nodes;
-    triangles_.assign(nodes.size(), 0);
-    if (nodes.empty()) return;
-    std::vector<std::pair<uint32_t, bool>> stack{{0, false}};
-    while (!stack.empty()) {
-      const auto [k, children_done] = stack.back();
-      stack.pop_back();
-      const BinaryNode& n = nodes[k];
-      if (n.leaf()) {
-        triangles_[k] = n.count;
-      } else if (children_done) {
-        triangles_[k] = triangles_[n.first] + triangles_[n.first + 1];
-      } else {
-        stack.push_back({k, true});
-        stack.push_back({n.first, false});
-        stack.push_back({n.first + 1, false});
-      }
-    }
+    triangles_ = fold_subtrees<uint32_t>(
+        tree_, [](const BinaryNode& n) { return n.count; }, [](uint32_t a, uint32_t b) { return a + b; });
   }
   // The priority of opening binary node k (see CollapseRule).
   float open_priority(uint32_t k) const {

@@ -28,19 +28,25 @@ class BvhTraversal : public test::BvhCaseTest {
     return GetParam().intersector == Intersector::mt64 || GetParam().intersector == Intersector::watertight64;
   }
 
+  // The options of expect_same's BvhAccelerator: this case's width, direct_leaf_, merge_steps_ and,
+  // when given, leaves from `sah` instead of the kernel's width.
+  BvhOptions options(std::optional<SahConfig> sah = std::nullopt) const {
+    BvhOptions o;
+    if (sah) {
+      o.sah = *sah;
+      o.leaves_from_kernel = false;
+    }
+    o.width = GetParam().width;
+    o.direct_leaf = direct_leaf_;
+    o.merge_steps = merge_steps_;
+    return o;
+  }
+
   // Every ray through both accelerators; any-hit also with a filter ignoring even ids.
   void expect_same(const TriangleMesh& mesh, const std::vector<Ray>& rays,
                    std::optional<SahConfig> sah = std::nullopt) {
     const BruteForce brute(mesh, config());
-    BvhOptions options;
-    if (sah) {
-      options.sah = *sah;
-      options.leaves_from_kernel = false;
-    }
-    options.width = GetParam().width;
-    options.direct_leaf = direct_leaf_;
-    options.merge_steps = merge_steps_;
-    const BvhAccelerator bvh(mesh, config(), options);
+    const BvhAccelerator bvh(mesh, config(), options(sah));
     const HitFilter odd_only{[](const void*, int32_t id) { return id % 2 == 0; }, nullptr};
     int hits = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -201,12 +207,8 @@ TEST_P(BvhTraversal, DeepTreesMatchBruteForce) {
   SahConfig sah;
   sah.max_leaf = 1;
   sah.leaf_block = 1;
-  BvhOptions options;
-  options.sah = sah;
-  options.leaves_from_kernel = false;
-  options.width = GetParam().width;
-  options.merge_steps = merge_steps_ = 0;  // merging would fold the chain's bottom into a few leaves
-  const BvhAccelerator bvh(chain, config(), options);
+  merge_steps_ = 0;  // merging would fold the chain's bottom into a few leaves
+  const BvhAccelerator bvh(chain, config(), options(sah));
   EXPECT_GE(bvh.tree().depth(), 8u) << "the chain should make a deep tree";
   std::vector<Ray> rays;
   for (int i = 0; i < 200; ++i) {
@@ -233,11 +235,7 @@ TEST_P(BvhTraversal, MergedLeavesWithPaddingMatchBruteForceThroughTheOrigin) {
   SahConfig sah;  // leaves of 1–3 triangles: many need padding to keep to their kernel steps
   sah.max_leaf = 3;
   sah.leaf_block = 3;
-  BvhOptions options;
-  options.sah = sah;
-  options.leaves_from_kernel = false;
-  options.width = GetParam().width;
-  const BvhAccelerator bvh(mesh, config(), options);
+  const BvhAccelerator bvh(mesh, config(), options(sah));
   bool padding_in_a_leaf = false;
   const auto scan = [&](const auto* nodes) {
     for (uint32_t i = 0; i < bvh.tree().node_count(); ++i)
