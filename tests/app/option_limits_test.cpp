@@ -41,5 +41,21 @@ TEST(OptionLimits, ThreadsAboveTheBoundAreRefusedForEveryCommand) {
   EXPECT_EQ(r.status, 0) << r.err;
 }
 
+// bench rays' tuning options: a merged leaf holds at most 32 slots, so --merge-steps stops there;
+// in range it is run and reported.
+TEST(OptionLimits, BenchRaysMergeStepsAreBounded) {
+  const std::string dir = test::temp_dir("option_merge_steps");
+  test::write_file(dir + "/m.obj", "v 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\n");
+  const std::string bench = "bench rays " + dir + "/m.obj --size 4x4 --repeats 1 --builds 1";
+  for (const char* bad : {" --merge-steps 33", " --merge-steps -1"}) {
+    const auto r = test::run_cli(bench + bad);
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find("--merge-steps: must be 0 to 32"), std::string::npos) << bad << ": " << r.err;
+  }
+  const auto r = test::run_cli(bench + " --merge-steps 0 --json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"merge_steps\":0"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace rayvec
