@@ -71,8 +71,8 @@ class TriangleSoA {
 
   TriangleSoA() = default;
   // Triangles of `mesh` in the given order of triangle ids (all of them in id order when empty);
-  // an entry kPaddingSlot in `order` makes a zero-area slot with id −1 (BVH leaves use it to start
-  // on a SIMD step).
+  // an entry kPaddingSlot in `order` makes a zero-area slot with id −1 (BVH leaves use it to keep
+  // to the fewest SIMD steps; no kernel reports such a slot).
   static constexpr uint32_t kPaddingSlot = 0xffffffffu;
   explicit TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order = {});
 
