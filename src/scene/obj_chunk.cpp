@@ -211,13 +211,24 @@ class ChunkParser {
     const auto t = static_cast<uint32_t>(c_.triangles.size());
     c_.triangles.push_back({static_cast<uint32_t>(a.index[kV]), static_cast<uint32_t>(b.index[kV]),
                             static_cast<uint32_t>(c.index[kV])});
-    c_.triangle_texcoords.push_back({a.index[kVt], b.index[kVt], c.index[kVt]});
-    c_.triangle_normals.push_back({a.index[kVn], b.index[kVn], c.index[kVn]});
+    corner_indices(c_.triangle_texcoords, t, {a.index[kVt], b.index[kVt], c.index[kVt]});
+    corner_indices(c_.triangle_normals, t, {a.index[kVn], b.index[kVn], c.index[kVn]});
     if (!(a.any_relative() || b.any_relative() || c.any_relative())) return;
     const Corner* corners[3] = {&a, &b, &c};
     for (uint32_t k = 0; k < 3; ++k)
       for (int kind = 0; kind < 3; ++kind)
         if (corners[k]->relative[kind]) c_.relative[kind].push_back(3 * t + k);
+  }
+
+  // Appends triangle t's corner indices of one kind. The array stays empty while no triangle has
+  // one (ObjChunk): a file of positions only never writes the two arrays of -1 (24 bytes a triangle
+  // of fresh memory).
+  static void corner_indices(std::vector<std::array<int32_t, 3>>& v, uint32_t t, std::array<int32_t, 3> idx) {
+    if (v.empty()) {
+      if (idx == kNoCornerIndices) return;
+      v.assign(t, kNoCornerIndices);
+    }
+    v.push_back(idx);
   }
 
   ObjChunk& c_;

@@ -28,11 +28,14 @@ struct ObjEvent {
 // Face corner indices are 0-based. Where the file writes a negative (relative) index, the value
 // stored is relative to the chunk's first element of that kind (it may be negative: an element of
 // an earlier chunk) and its slot is listed in `relative`; the caller adds the chunk's offset.
+inline constexpr std::array<int32_t, 3> kNoCornerIndices{-1, -1, -1};
+
 struct ObjChunk {
   std::vector<Vec3f> positions, normals;
   std::vector<std::array<float, 2>> texcoords;
   std::vector<std::array<uint32_t, 3>> triangles;
-  std::vector<std::array<int32_t, 3>> triangle_normals, triangle_texcoords;  // -1: none
+  // -1: none. Each is empty while no triangle of the chunk gives that kind, then one per triangle.
+  std::vector<std::array<int32_t, 3>> triangle_normals, triangle_texcoords;
   // Quads are stored as the triangles (0,1,2), (0,2,3); the first one's index is listed here for
   // the caller to choose the diagonal once every position is known.
   std::vector<uint32_t> quads;

@@ -28,8 +28,10 @@ void reserve(ObjChunk& c, const ObjCounts& n) {
   reserve(c.normals, n.normals);
   reserve(c.texcoords, n.texcoords);
   reserve(c.triangles, n.triangles);
-  reserve(c.triangle_normals, n.triangles);
-  reserve(c.triangle_texcoords, n.triangles);
+  // the corner index arrays only where the sample saw the attribute: a file without it leaves them
+  // empty (ObjChunk), one with it unsampled grows them as it goes
+  if (n.normals > 0) reserve(c.triangle_normals, n.triangles);
+  if (n.texcoords > 0) reserve(c.triangle_texcoords, n.triangles);
 }
 
 // Room reserved for one array of the joined result, and where a later piece will probably land in it.
@@ -187,9 +189,21 @@ void split_quads(const std::vector<uint32_t>& quads, ObjModel& m) {
       t1 = {c1, c2, c3};
     };
     resplit(a, b);
-    resplit(m.triangle_texcoords[q], m.triangle_texcoords[q + 1]);
-    resplit(m.triangle_normals[q], m.triangle_normals[q + 1]);
+    if (!m.triangle_texcoords.empty()) resplit(m.triangle_texcoords[q], m.triangle_texcoords[q + 1]);
+    if (!m.triangle_normals.empty()) resplit(m.triangle_normals[q], m.triangle_normals[q + 1]);
   }
+}
+
+// Gives every chunk's corner index array of one kind its -1 entries when some chunk has that kind
+// and this one has not (ObjChunk keeps such an array empty), so the joined array is either empty
+// or one entry per triangle.
+void fill_corner_indices(std::vector<ObjChunk>& chunks,
+                         std::vector<std::array<int32_t, 3>> ObjChunk::*indices) {
+  const bool any =
+      std::any_of(chunks.begin(), chunks.end(), [&](const ObjChunk& c) { return !(c.*indices).empty(); });
+  if (!any) return;
+  for (ObjChunk& c : chunks)
+    if ((c.*indices).empty()) (c.*indices).assign(c.triangles.size(), kNoCornerIndices);
 }
 
 template <typename T>
@@ -235,6 +249,8 @@ bool load_obj_pieces(std::string_view text, const ObjSample& sample,
   // From here on the text is ours: no more fallbacks, so the MTL files load exactly once.
   ObjModel out;
   out.triangle_material = replay_materials(chunks, at, at.back().triangles, load_mtl, warn, err);
+  fill_corner_indices(chunks, &ObjChunk::triangle_normals);
+  fill_corner_indices(chunks, &ObjChunk::triangle_texcoords);
   std::vector<uint32_t> quads;
   for (std::size_t i = 0; i < chunks.size(); ++i) {
     ObjChunk& c = chunks[i];

@@ -7,6 +7,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <system_error>
@@ -115,6 +116,14 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
           material >= 0 && material < static_cast<int>(material_count) ? material : -1);
     }
   }
+  // ObjModel: a kind no face gives leaves its array empty
+  const auto drop_if_unused = [](std::vector<std::array<int32_t, 3>>& v) {
+    const std::array<int32_t, 3> none{-1, -1, -1};
+    if (std::all_of(v.begin(), v.end(), [&](const auto& idx) { return idx == none; }))
+      std::vector<std::array<int32_t, 3>>().swap(v);
+  };
+  drop_if_unused(model.triangle_normals);
+  drop_if_unused(model.triangle_texcoords);
 }
 
 }  // namespace

@@ -17,7 +17,9 @@ struct ObjModel {
   TriangleMesh mesh;
   std::vector<int32_t> triangle_material;  // per triangle: index into materials, -1 = none
   std::vector<Material> materials;  // from the MTL files (mtl_file.h): validated, map_Kd absolute or ""
-  // Optional per-corner attributes: -1 where the face gives none.
+  // Optional per-corner attributes: -1 where the face gives none. triangle_normals (and
+  // triangle_texcoords) is empty when no face gives any normal (texture coordinate), else it holds
+  // one entry per triangle.
   std::vector<Vec3f> normals;
   std::vector<std::array<int32_t, 3>> triangle_normals;
   std::vector<std::array<float, 2>> texcoords;

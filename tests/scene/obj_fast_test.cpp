@@ -132,6 +132,9 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
   EXPECT_TRUE(same_on("relative", quad + "f -4 -3 -2\nv 9 9 9\nf -1 -2 -3 -4\nf 1 2 -1\n"));
   EXPECT_TRUE(same_on("attributes", quad + "vt 0.5\nvt .25 +.75 7\nvn 0 0 1\nvn -0 1e-3 1E2\n"
                                            "f 1/1 2/2 3/1\nf 1//1 2//2 3//-1\nf 1/-1/1 2/2/2 3/1/1 4/2/2\n"));
+  EXPECT_TRUE(same_on("late_attributes", quad + "vn 0 0 1\nvt 0 0\nf 1 2 3 4\nf 5 6 7\n"
+                                                "f 1//1 2//1 3//1\nf 1/1 2/1 3/1 4/1\nf 5 6 7 8\n"));
+  EXPECT_TRUE(same_on("unused_attributes", quad + "vn 0 0 1\nvt 0 0\nf 1 2 3 4\nf 5 6 7\n"));
   EXPECT_TRUE(same_on("materials", quad + "usemtl a\nf 1 2 3\nmtllib m.mtl\nf 1 2 3\nusemtl b\nf 1 2 3\n"
                                           "usemtl nope\nf 1 2 3 4\nusemtl a\nusemtl a\nf 2 3 4\n"));
   EXPECT_TRUE(same_on("mtllibs", quad + "mtllib missing.mtl m.mtl\nmtllib m.mtl\nusemtlb\nf 1 2 3\n"));

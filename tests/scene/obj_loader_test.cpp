@@ -2,9 +2,11 @@
 // would not report (nan vertices, indices out of range) with their line numbers.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "io/input_error.h"
 #include "scene/obj_loader.h"
@@ -102,6 +104,31 @@ TEST(ObjLoader, KeepsPerCornerNormalsAndTexcoords) {
   EXPECT_EQ(m.triangle_normals[2], (std::array<int32_t, 3>{-1, -1, -1}));
   EXPECT_EQ(m.triangle_normals[5], (std::array<int32_t, 3>{0, 0, 0}));
   EXPECT_EQ(m.triangle_texcoords[5], (std::array<int32_t, 3>{-1, -1, -1}));
+}
+
+// A kind of corner index that no face gives leaves its array empty, on both readers; one that only
+// later faces give fills the earlier triangles with -1.
+TEST(ObjLoader, CornerIndexArraysAreEmptyWhenNoFaceGivesThatKind) {
+  const std::string dir = test::temp_dir("obj_corner_kinds");
+  const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  test::write_file(dir + "/plain.obj", quad + "vn 0 0 1\nvt 0 0\nf 1 2 3\nf 1 2 3 4\n");
+  test::write_file(dir + "/late.obj", quad + "vn 0 0 1\nf 1 2 3\nf 1 2 3 4\nf 1//1 2//1 3//1\n");
+  for (const bool reference : {false, true}) {
+    ObjLoadOptions options;
+    options.reference = reference;
+    ObjLoadTimes times;
+    const ObjModel plain = load_obj(dir + "/plain.obj", options, &times);
+    EXPECT_EQ(times.fast, !reference);
+    EXPECT_EQ(plain.mesh.size(), 3u);
+    EXPECT_EQ(plain.normals.size(), 1u);
+    EXPECT_TRUE(plain.triangle_normals.empty()) << "reference " << reference;
+    EXPECT_TRUE(plain.triangle_texcoords.empty()) << "reference " << reference;
+    const ObjModel late = load_obj(dir + "/late.obj", options);
+    const std::array<int32_t, 3> none{-1, -1, -1}, first{0, 0, 0};
+    EXPECT_EQ(late.triangle_normals, (std::vector<std::array<int32_t, 3>>{none, none, none, first}))
+        << "reference " << reference;
+    EXPECT_TRUE(late.triangle_texcoords.empty()) << "reference " << reference;
+  }
 }
 
 TEST(ObjLoader, NonFiniteVertexIsRejectedWithItsLine) {

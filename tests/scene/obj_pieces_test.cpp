@@ -115,6 +115,10 @@ TEST(ObjPieces, CutsChangeNothingOnEdgeCases) {
                                              "vt 0.5\nvt .25 +.75 7\nvn 0 0 1\nvn -0 1e-3 1E2\n"
                                              "f 1/1 2/2 3/1\nf 1//1 2//2 3//-1\nf 1/-1/1 2/2/2 3/1/1 4/2/2\n",
                                          "attributes"));
+  EXPECT_TRUE(expect_cuts_change_nothing(kQuad + "vn 0 0 1\nvt 0 0\nf 1 2 3 4\nf 5 6 7\nf 4 3 2 1\n"
+                                                 "f 1//1 2//1 3//1\nf 1/1 2/1 3/1 4/1\nf 5 6 7 8\n",
+                                         "attributes from a later face on"));
+  EXPECT_TRUE(expect_cuts_change_nothing(kQuad + "vn 0 0 1\nf 1 2 3 4\nf 5 6 7\n", "attributes unused"));
   EXPECT_TRUE(expect_cuts_change_nothing(kQuad +
                                              "usemtl a\nf 1 2 3\nmtllib m.mtl\nf 1 2 3\nusemtl b\nf 1 2 3\n"
                                              "usemtl nope\nf 1 2 3 4\nusemtl a\nusemtl a\nf 2 3 4\n",
