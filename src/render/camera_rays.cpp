@@ -13,10 +13,4 @@ CameraRays::CameraRays(const Camera& c) : eye_(c.eye), frame_(look_at_frame(c.ey
   scale_x_ = tan_half / half_h_;  // square pixels: the same angle per pixel both ways
 }
 
-Ray CameraRays::ray(float px, float py) const {
-  const float x = (px - half_w_) * scale_x_;
-  const float y = (half_h_ - py) * scale_y_;
-  return Ray{eye_, frame_.direction(x, y), 0.0f, kInf};
-}
-
 }  // namespace rayvec

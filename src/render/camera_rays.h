@@ -13,7 +13,13 @@ class CameraRays {
   explicit CameraRays(const Camera& camera);
   // The ray through continuous image position (px, py): px in [0, width) left to right,
   // py in [0, height) top to bottom; pixel (x, y)'s centre is (x + 0.5, y + 0.5). Unit direction.
-  Ray ray(float px, float py) const;
+  // Inline: built in the caller's array instead of returned through a temporary (whose scalar
+  // stores, read back by a vector copy, stalled store forwarding once per primary ray).
+  Ray ray(float px, float py) const {
+    const float x = (px - half_w_) * scale_x_;
+    const float y = (half_h_ - py) * scale_y_;
+    return Ray{eye_, frame_.direction(x, y), 0.0f, kInf};
+  }
   Vec3f forward() const { return frame_.forward; }
 
  private:
