@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "math/vec3.h"
+#include "scene/obj_loader.h"
 
 namespace rayvec {
 
@@ -28,8 +29,6 @@ struct ObjEvent {
 // Face corner indices are 0-based. Where the file writes a negative (relative) index, the value
 // stored is relative to the chunk's first element of that kind (it may be negative: an element of
 // an earlier chunk) and its slot is listed in `relative`; the caller adds the chunk's offset.
-inline constexpr std::array<int32_t, 3> kNoCornerIndices{-1, -1, -1};
-
 struct ObjChunk {
   std::vector<Vec3f> positions, normals;
   std::vector<std::array<float, 2>> texcoords;

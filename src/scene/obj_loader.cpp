@@ -97,7 +97,7 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
       if (shape.mesh.num_face_vertices[f] != 3 || first + 3 > idx.size())
         throw InputError(path, 0, "tinyobjloader returned a face that is not a triangle");
       std::array<uint32_t, 3> tri{};
-      std::array<int32_t, 3> tri_n{-1, -1, -1}, tri_t{-1, -1, -1};
+      std::array<int32_t, 3> tri_n = kNoCornerIndices, tri_t = kNoCornerIndices;
       for (int k = 0; k < 3; ++k) {
         const tinyobj::index_t& c = idx[first + k];
         // obj_scan.cpp has checked every index with its line; this guards against surprises.
@@ -118,8 +118,7 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
   }
   // ObjModel: a kind no face gives leaves its array empty
   const auto drop_if_unused = [](std::vector<std::array<int32_t, 3>>& v) {
-    const std::array<int32_t, 3> none{-1, -1, -1};
-    if (std::all_of(v.begin(), v.end(), [&](const auto& idx) { return idx == none; }))
+    if (std::all_of(v.begin(), v.end(), [](const auto& idx) { return idx == kNoCornerIndices; }))
       std::vector<std::array<int32_t, 3>>().swap(v);
   };
   drop_if_unused(model.triangle_normals);

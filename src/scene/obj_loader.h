@@ -12,6 +12,9 @@
 
 namespace rayvec {
 
+// A triangle's corner indices where its face gives none of that kind (normal or texture coordinate).
+inline constexpr std::array<int32_t, 3> kNoCornerIndices{-1, -1, -1};
+
 struct ObjModel {
   // Triangles in file order after triangulating polygons as tinyobjloader does; triangle id = index.
   TriangleMesh mesh;
