@@ -89,7 +89,7 @@ void require_exr_module() { module("writing EXR"); }
 
 Image read_exr(const std::string& path) {
   const RayvecExrModule& m = module(path + ": reading EXR");
-  check_exr_attribute_sizes(path);
+  check_exr_attributes(path);
   std::string error(kErrorSize, '\0');
   auto why = [&] { return std::string("cannot read EXR: ") + error.c_str(); };
   RayvecExrInfo h{};

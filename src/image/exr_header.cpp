@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <utility>
 
 #include "io/input_error.h"
@@ -43,7 +44,7 @@ long fixed_size(const std::string& type) {
 
 }  // namespace
 
-void check_exr_attribute_sizes(const std::string& path) {
+void check_exr_attributes(const std::string& path) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) return;  // the module's open reports it
   std::fseek(f.get(), 0, SEEK_END);
@@ -69,6 +70,7 @@ void check_exr_attribute_sizes(const std::string& path) {
   std::string name, type;
   for (int headers = 0; headers < 1000000; ++headers) {
     bool empty_header = true;
+    std::set<std::string> names;  // of this header
     for (read_name(name, "name"); !name.empty(); read_name(name, "name")) {
       empty_header = false;
       unsigned char size_bytes[4];
@@ -91,6 +93,8 @@ void check_exr_attribute_sizes(const std::string& path) {
             path, 0,
             "cannot read EXR: attribute '" + printable(name) + "' of type " + printable(type) + ": " + why);
       };
+      if (!names.insert(name).second)
+        throw refuse("given twice in one header (OpenEXR's two parsers would each read a different one)");
       if (expected >= 0 && size != expected)
         throw refuse("size " + std::to_string(size) + ", but this type has " + std::to_string(expected) +
                      " bytes");

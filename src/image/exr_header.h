@@ -11,11 +11,13 @@ bool has_exr_magic(const unsigned char* bytes, std::size_t size);
 
 // Walks the attribute list of every header (name, type, int32 size, value) and throws InputError
 // naming the file when a value claims more bytes than the file holds or a size OpenEXR's C++ reader
-// would not consume. That reader allocates an attribute of unknown type at its declared size before
-// reading it, reads a typed one by its own layout whatever the size field says (and then parses the
-// rest of the header out of step), and allocates a preview at width x height x 4: one corrupt field
-// in a small file would cost gigabytes. OpenEXRCore skips such values unread and so does not catch it.
+// would not consume, or when a header gives one attribute twice. That reader allocates an attribute of
+// unknown type at its declared size before reading it, reads a typed one by its own layout whatever
+// the size field says (and then parses the rest of the header out of step), and allocates a preview
+// at width x height x 4: one corrupt field in a small file would cost gigabytes. OpenEXRCore skips
+// such values unread and so does not catch it. Of a repeated attribute OpenEXRCore keeps the first and
+// the C++ reader the last, so the two would disagree on the data window the pixels are written to.
 // A file that cannot be opened or is shorter than its version field passes (the module reports it).
-void check_exr_attribute_sizes(const std::string& path);
+void check_exr_attributes(const std::string& path);
 
 }  // namespace rayvec

@@ -30,21 +30,33 @@ std::size_t decoded_image_bytes(std::int64_t width, std::int64_t height, int cha
   return bytes >= 1.8e19 ? std::size_t(-1) : std::size_t(bytes);
 }
 
-void check_declared_image_size(const std::string& path, std::int64_t width, std::int64_t height,
-                               int channels) {
-  if (width <= 0 || height <= 0 || channels <= 0)
-    throw InputError(path, 0,
-                     "declares a " + size_text(width, height) + " image with " + std::to_string(channels) +
-                         " channels: an image needs at least one pixel and one channel");
-  const std::size_t need = decoded_image_bytes(width, height, channels);
+namespace {
+
+// Throws when `need` bytes exceed the input limit: `what` says what takes them.
+void check_limit(const std::string& path, const std::string& what, std::size_t need) {
   const std::size_t limit = max_input_bytes();
   if (need > limit)
     throw InputError(path, 0,
-                     "declares a " + size_text(width, height) + " image with " + std::to_string(channels) +
-                         " channels, " + megabytes(double(need)) + " once decoded, more than the " +
+                     what + ", " + megabytes(double(need)) + " once decoded, more than the " +
                          std::to_string(limit / 1000000) +
                          " MB input limit; set RAYVEC_MAX_INPUT_MB to raise it (e.g. RAYVEC_MAX_INPUT_MB=" +
                          std::to_string(need / 1000000 + 1000) + ") if this really is the image you meant");
+}
+
+}  // namespace
+
+void check_declared_image_size(const std::string& path, std::int64_t width, std::int64_t height,
+                               int channels) {
+  const std::string what =
+      "declares a " + size_text(width, height) + " image with " + std::to_string(channels) + " channels";
+  if (width <= 0 || height <= 0 || channels <= 0)
+    throw InputError(path, 0, what + ": an image needs at least one pixel and one channel");
+  check_limit(path, what, decoded_image_bytes(width, height, channels));
+}
+
+void check_texture_size(const std::string& path, std::int64_t width, std::int64_t height) {
+  check_limit(path, "is a " + size_text(width, height) + " texture, held as RGB floats",
+              decoded_image_bytes(width, height, 3));
 }
 
 void check_deflate_ratio(const std::string& path, std::int64_t width, std::int64_t height,

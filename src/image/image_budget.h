@@ -17,6 +17,11 @@ std::size_t decoded_image_bytes(std::int64_t width, std::int64_t height, int cha
 void check_declared_image_size(const std::string& path, std::int64_t width, std::int64_t height,
                                int channels);
 
+// Throws InputError `path: is a WxH texture ...` when the image, decoded, grows past the input limit
+// as a texture's three float channels (a grey or two-channel file passes check_declared_image_size
+// with fewer).
+void check_texture_size(const std::string& path, std::int64_t width, std::int64_t height);
+
 // Throws InputError when `raw_bytes` of pixel data cannot have been compressed with DEFLATE into a
 // file of `file_bytes` (DEFLATE shrinks at most 1032:1): the header lies or the file is truncated.
 // PNG only: EXR has codecs with other bounds and is instead read a strip at a time.

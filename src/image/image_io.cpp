@@ -15,6 +15,7 @@
 
 #include "image/exr_file.h"
 #include "image/exr_header.h"
+#include "image/image_budget.h"
 #include "image/oiio_module.h"
 #include "image/png_file.h"
 #include "image/srgb8.h"
@@ -119,6 +120,7 @@ Image read_image(const std::string& path, bool* encoded) {
 Image read_texture(const std::string& path) {
   bool encoded = false;
   const Image raw = read_any(path, &encoded);
+  check_texture_size(path, raw.width, raw.height);
   Image rgb(raw.width, raw.height, {"R", "G", "B"});
   const int n = raw.nchannels();
   for (int y = 0; y < raw.height; ++y)

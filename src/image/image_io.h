@@ -37,7 +37,8 @@ Image read_image(const std::string& path);
 Image read_image(const std::string& path, bool* encoded);
 
 // Reads a texture as linear RGB: 8- and 16-bit files are taken as sRGB-encoded and decoded, float
-// files (EXR, HDR) as linear; grey images are widened to RGB and alpha is dropped.
+// files (EXR, HDR) as linear; grey images are widened to RGB and alpha is dropped. The RGB floats
+// count against the input limit (image_budget.h), whatever the file stores.
 Image read_texture(const std::string& path);
 
 // sRGB transfer functions (IEC 61966-2-1).

@@ -6,11 +6,14 @@
 
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "image/crafted_images.h"
+#include "image/exr_module_abi.h"
 #include "image/image_budget.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
+#include "platform/plugin.h"
 #include "test_support.h"
 
 namespace rayvec {
@@ -121,6 +124,73 @@ TEST(ImageBudget, ExrAttributeNameTooLongIsRefused) {
       m.find("exr_attribute_name_too_long.exr: cannot read EXR: an attribute name longer than 31 bytes"),
       std::string::npos)
       << m;
+}
+
+// Found by fuzz_image (a heap overwrite that only showed as libFuzzer's own state corrupted): a
+// header that gives dataWindow twice, a 2x2 window and then the true 5x3 one. OpenEXRCore sized the
+// pixel buffer by the first, the C++ reader wrote the second's rows into it.
+TEST(ImageBudget, ExrAttributeGivenTwiceIsRefused) {
+  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_data_window_given_twice.exr";
+  const std::string m = message_of(path);
+  EXPECT_NE(m.find("exr_data_window_given_twice.exr: cannot read EXR: attribute 'dataWindow' of type box2i: "
+                   "given twice in one header"),
+            std::string::npos)
+      << m;
+}
+
+// The module does not rely on the binary's attribute walk: handed the same file directly, it refuses
+// to decode pixels into a buffer laid out by the header OpenEXRCore read.
+TEST(ImageBudget, ExrModuleRefusesAHeaderItsTwoParsersReadDifferently) {
+  const Plugin p = open_plugin("RAYVEC_EXR_MODULE", kExrModuleName, /*global=*/false);
+  ASSERT_NE(p.handle, nullptr) << plugin_problem(p, kExrModuleName, "RAYVEC_EXR_MODULE");
+  const auto entry = reinterpret_cast<RayvecExrModuleFn>(plugin_symbol(p, "rayvec_exr_module"));
+  ASSERT_NE(entry, nullptr);
+  const RayvecExrModule& m = *entry();
+  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_data_window_given_twice.exr";
+  void* file = nullptr;
+  RayvecExrInfo info{};
+  char error[512] = "";
+  ASSERT_EQ(m.open(path.c_str(), &file, &info, error, sizeof error), kRayvecExrOk) << error;
+  EXPECT_EQ(info.width, 2);  // the first dataWindow
+  EXPECT_EQ(info.height, 2);
+  std::vector<float> pixels(std::size_t(info.width) * std::size_t(info.height) * std::size_t(info.channels));
+  std::vector<const char*> names;
+  for (int c = 0; c < info.channels; ++c) names.push_back(m.channel(file, c));
+  EXPECT_EQ(
+      m.read_rows(file, names.data(), info.channels, pixels.data(), 0, info.height, error, sizeof error),
+      kRayvecExrBadInput);
+  EXPECT_NE(std::string(error).find("two header parsers disagree"), std::string::npos) << error;
+  m.close(file);
+}
+
+// Found by fuzz_image: a 458753x1 EXR whose one pixel chunk is cut off by the end of the file.
+// OpenEXR's C++ reader decoded it from a buffer it never filled and reported success.
+TEST(ImageBudget, ExrChunkCutOffByTheEndOfTheFileIsRefused) {
+  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_chunk_cut_off.exr";
+  const std::string m = message_of(path);
+  EXPECT_NE(m.find("exr_chunk_cut_off.exr: cannot read EXR: pixel data: "), std::string::npos) << m;
+}
+
+// Found by fuzz_image with the same file: within the limit as stored (two channels), but a texture
+// is held as three. A grey image is checked as what it becomes.
+TEST(ImageBudget, TextureIsCheckedAsTheRgbItBecomes) {
+  const std::string dir = test::temp_dir("budget_texture");
+  const std::string grey = std::string("P5\n400 400\n255\n") + std::string(400 * 400, '\x80');
+  test::write_file(dir + "/grey.pgm", grey);  // 0.64 MB as one float channel, 1.92 MB as RGB
+  ::setenv("RAYVEC_MAX_INPUT_MB", "1", 1);
+  std::string m = "(no InputError)";
+  EXPECT_EQ(read_image(dir + "/grey.pgm").nchannels(), 1);
+  try {
+    read_texture(dir + "/grey.pgm");
+  } catch (const InputError& e) {
+    m = e.what();
+  }
+  ::unsetenv("RAYVEC_MAX_INPUT_MB");
+  EXPECT_NE(
+      m.find("grey.pgm: is a 400x400 texture, held as RGB floats, 2 MB once decoded, more than the 1 MB"),
+      std::string::npos)
+      << m;
+  EXPECT_EQ(read_texture(dir + "/grey.pgm").nchannels(), 3);
 }
 
 // Found by fuzz_image: a channel list that ends before its declared size. OpenEXR's C++ reader
