@@ -41,7 +41,9 @@ TEST(CountingTraversal, SameHitsAsTheUncountedQueriesAtEveryWidth) {
 }
 
 TEST(CountingTraversal, ARayPastTheMeshTestsOneNodeAndNoTriangle) {
-  const TriangleMesh mesh = test::sphere(1.0f, 16, 32);
+  // Large enough that no node width makes the root's children all leaves (on a 16-wide tree with
+  // merged leaves a thousand triangles fit under the root alone).
+  const TriangleMesh mesh = test::sphere(1.0f, 64, 128);
   const BvhAccelerator bvh(mesh, TraceConfig{best_isa(), Intersector::mt});
   TraversalCost c;
   EXPECT_FALSE(bvh.closest_counted(Ray{{10, 10, 10}, {1, 0, 0}, 0.0f, kInf}, c).hit());
