@@ -28,6 +28,15 @@ std::string message_of(const std::string& path) {
   return "(no InputError)";
 }
 
+// The path of a reproducer in tests/data/fuzz/.
+std::string fuzz_file(const std::string& name) { return std::string(RAYVEC_TEST_DATA) + "/fuzz/" + name; }
+
+// Reading the reproducer `name` fails with an InputError whose message holds `expected`.
+void expect_refused(const std::string& name, const std::string& expected) {
+  const std::string m = message_of(fuzz_file(name));
+  EXPECT_NE(m.find(expected), std::string::npos) << m;
+}
+
 std::string small_exr(const std::string& dir) {
   write_image(dir + "/small.exr", Image(4, 4, {"R", "G", "B"}));
   return test::read_file(dir + "/small.exr");
@@ -106,36 +115,26 @@ TEST(ImageBudget, CommandsThatDecodeImagesExitTwoNamingTheFile) {
 // Found by fuzz_image: an attribute of unknown type whose size field says 1.7 GB in a 325-byte file;
 // OpenEXR's C++ reader allocated it before reading (libFuzzer: out-of-memory).
 TEST(ImageBudget, ExrAttributeLargerThanTheFileIsRefused) {
-  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_attribute_claims_1.7GB.exr";
-  const std::string m = message_of(path);
-  EXPECT_NE(m.find("exr_attribute_claims_1.7GB.exr: cannot read EXR: attribute 'rayvecv/1\\x01\\x02' "
-                   "declares 1718571776 bytes"),
-            std::string::npos)
-      << m;
+  expect_refused("exr_attribute_claims_1.7GB.exr",
+                 "exr_attribute_claims_1.7GB.exr: cannot read EXR: attribute 'rayvecv/1\\x01\\x02' "
+                 "declares 1718571776 bytes");
 }
 
 // Found by fuzz_image: an 80-byte attribute name in a file without the long-names flag. OpenEXR's
 // C++ reader took the first 31 bytes as the name and parsed the rest out of step, into an
 // attribute of 1.7 GB.
 TEST(ImageBudget, ExrAttributeNameTooLongIsRefused) {
-  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_attribute_name_too_long.exr";
-  const std::string m = message_of(path);
-  EXPECT_NE(
-      m.find("exr_attribute_name_too_long.exr: cannot read EXR: an attribute name longer than 31 bytes"),
-      std::string::npos)
-      << m;
+  expect_refused("exr_attribute_name_too_long.exr",
+                 "exr_attribute_name_too_long.exr: cannot read EXR: an attribute name longer than 31 bytes");
 }
 
 // Found by fuzz_image (a heap overwrite that only showed as libFuzzer's own state corrupted): a
 // header that gives dataWindow twice, a 2x2 window and then the true 5x3 one. OpenEXRCore sized the
 // pixel buffer by the first, the C++ reader wrote the second's rows into it.
 TEST(ImageBudget, ExrAttributeGivenTwiceIsRefused) {
-  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_data_window_given_twice.exr";
-  const std::string m = message_of(path);
-  EXPECT_NE(m.find("exr_data_window_given_twice.exr: cannot read EXR: attribute 'dataWindow' of type box2i: "
-                   "given twice in one header"),
-            std::string::npos)
-      << m;
+  expect_refused("exr_data_window_given_twice.exr",
+                 "exr_data_window_given_twice.exr: cannot read EXR: attribute 'dataWindow' of type box2i: "
+                 "given twice in one header");
 }
 
 // The module does not rely on the binary's attribute walk: handed the same file directly, it refuses
@@ -146,7 +145,7 @@ TEST(ImageBudget, ExrModuleRefusesAHeaderItsTwoParsersReadDifferently) {
   const auto entry = reinterpret_cast<RayvecExrModuleFn>(plugin_symbol(p, "rayvec_exr_module"));
   ASSERT_NE(entry, nullptr);
   const RayvecExrModule& m = *entry();
-  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_data_window_given_twice.exr";
+  const std::string path = fuzz_file("exr_data_window_given_twice.exr");
   void* file = nullptr;
   RayvecExrInfo info{};
   char error[512] = "";
@@ -166,9 +165,7 @@ TEST(ImageBudget, ExrModuleRefusesAHeaderItsTwoParsersReadDifferently) {
 // Found by fuzz_image: a 458753x1 EXR whose one pixel chunk is cut off by the end of the file.
 // OpenEXR's C++ reader decoded it from a buffer it never filled and reported success.
 TEST(ImageBudget, ExrChunkCutOffByTheEndOfTheFileIsRefused) {
-  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_chunk_cut_off.exr";
-  const std::string m = message_of(path);
-  EXPECT_NE(m.find("exr_chunk_cut_off.exr: cannot read EXR: pixel data: "), std::string::npos) << m;
+  expect_refused("exr_chunk_cut_off.exr", "exr_chunk_cut_off.exr: cannot read EXR: pixel data: ");
 }
 
 // Found by fuzz_image with the same file: within the limit as stored (two channels), but a texture
@@ -196,23 +193,16 @@ TEST(ImageBudget, TextureIsCheckedAsTheRgbItBecomes) {
 // Found by fuzz_image: a channel list that ends before its declared size. OpenEXR's C++ reader
 // reads typed attributes by their own layout, went on out of step and allocated 1.7 GB.
 TEST(ImageBudget, ExrTypedAttributeThatDoesNotFillItsSizeIsRefused) {
-  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/exr_channel_list_short_of_its_size.exr";
-  const std::string m = message_of(path);
-  EXPECT_NE(
-      m.find("cannot read EXR: attribute 'channels' of type chlist: the channel list does not fill its 178"),
-      std::string::npos)
-      << m;
+  expect_refused(
+      "exr_channel_list_short_of_its_size.exr",
+      "cannot read EXR: attribute 'channels' of type chlist: the channel list does not fill its 178");
 }
 
 // Found by fuzz_image: a tEXt chunk whose length says 1.8 GB in a small file; libpng allocated it
 // before reading.
 TEST(ImageBudget, PngChunkLongerThanTheFileIsRefused) {
-  const std::string path = std::string(RAYVEC_TEST_DATA) + "/fuzz/png_text_chunk_claims_1.8GB.png";
-  const std::string m = message_of(path);
-  EXPECT_NE(
-      m.find("png_text_chunk_claims_1.8GB.png: cannot read PNG: chunk 'tEXt' declares 1852133234 bytes"),
-      std::string::npos)
-      << m;
+  expect_refused("png_text_chunk_claims_1.8GB.png",
+                 "png_text_chunk_claims_1.8GB.png: cannot read PNG: chunk 'tEXt' declares 1852133234 bytes");
 }
 
 TEST(ImageBudget, DecodedBytesAreFloatsPerChannel) {
