@@ -41,7 +41,7 @@ struct RayvecExrModule {
   // Decodes rows [y0, y1) of the data window of the `count` channels `names`, as floats interleaved
   // in that order, into `pixels`, which addresses row 0 of the data window and holds at least y1 rows
   // of width * count floats. Refuses (bad input) a file whose header the C++ reader parses to another
-  // data window or channel list than open reported.
+  // data window or channel list than open reported, or whose pixel chunks do not lie within the file.
   int (*read_rows)(void* file, const char* const* names, int count, float* pixels, int y0, int y1,
                    char* error, std::size_t error_size);
   void (*close)(void* file);

@@ -22,16 +22,6 @@ std::string megabytes(double bytes) {
   return buf;
 }
 
-}  // namespace
-
-std::size_t decoded_image_bytes(std::int64_t width, std::int64_t height, int channels) {
-  if (width <= 0 || height <= 0 || channels <= 0) return 0;
-  const double bytes = double(width) * double(height) * double(channels) * sizeof(float);
-  return bytes >= 1.8e19 ? std::size_t(-1) : std::size_t(bytes);
-}
-
-namespace {
-
 // Throws when `need` bytes exceed the input limit: `what` says what takes them.
 void check_limit(const std::string& path, const std::string& what, std::size_t need) {
   const std::size_t limit = max_input_bytes();
@@ -44,6 +34,12 @@ void check_limit(const std::string& path, const std::string& what, std::size_t n
 }
 
 }  // namespace
+
+std::size_t decoded_image_bytes(std::int64_t width, std::int64_t height, int channels) {
+  if (width <= 0 || height <= 0 || channels <= 0) return 0;
+  const double bytes = double(width) * double(height) * double(channels) * sizeof(float);
+  return bytes >= 1.8e19 ? std::size_t(-1) : std::size_t(bytes);
+}
 
 void check_declared_image_size(const std::string& path, std::int64_t width, std::int64_t height,
                                int channels) {
