@@ -3,9 +3,12 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
+#include <vector>
 
 #include "test_support.h"
 
@@ -22,11 +25,33 @@ void write_file(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
+namespace {
+
+// The directories temp_dir made in this process, removed when it exits (ctest runs every test in
+// a process of its own), unless RAYVEC_KEEP_TEST_FILES is set, to look at them after a failure.
+class TempDirs {
+ public:
+  ~TempDirs() {
+    if (std::getenv("RAYVEC_KEEP_TEST_FILES") != nullptr) return;
+    std::error_code ignored;
+    for (const auto& dir : dirs_) std::filesystem::remove_all(dir, ignored);
+  }
+  void add(const std::filesystem::path& dir) { dirs_.push_back(dir); }
+
+ private:
+  std::vector<std::filesystem::path> dirs_;
+};
+
+TempDirs made_dirs;
+
+}  // namespace
+
 std::string temp_dir(const std::string& name) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("rayvec_test_" + std::to_string(::getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  made_dirs.add(dir);
   return dir.string();
 }
 

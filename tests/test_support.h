@@ -19,7 +19,8 @@ CommandResult run_launched(const std::string& launcher, const std::string& args,
 // How many times `needle` occurs in `text`.
 int count_of(const std::string& text, const std::string& needle);
 
-// A fresh empty directory under the build tree's temp area.
+// A fresh empty directory in the system's temp area, removed with its contents when the test
+// process exits (kept if RAYVEC_KEEP_TEST_FILES is set).
 std::string temp_dir(const std::string& name);
 
 std::string read_file(const std::string& path);
