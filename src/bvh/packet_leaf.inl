@@ -37,7 +37,7 @@ struct MtPacketRays {
 template <class V>
 struct MtTriangleBroadcast {
   const float* p;  // T.v0x + slot_offset(i)
-  RAYVEC_INLINE V operator()(uint32_t row) const { return V::broadcast(p[row * kSlotBlock]); }
+  RAYVEC_INLINE V operator()(uint32_t row) const { return V::broadcast_kept(p + row * kSlotBlock); }
 };
 
 // The end of a packet leaf: the lanes in `found` have a nearest hit in the leaf, t, u, v and the
