@@ -116,6 +116,9 @@ class Cursor {
 
 struct Corner {
   std::array<int32_t, 3> index{0, -1, -1};  // v, vt, vn; 0-based (see ObjChunk), -1 = none
+  std::array<bool, 3> given{true, false, false};
+  // A relative index is local to the piece until it is fixed up: -1 there is a vertex of an
+  // earlier piece, not "none" (`given` tells).
   std::array<bool, 3> relative{false, false, false};
   bool any_relative() const { return relative[0] || relative[1] || relative[2]; }
 };
@@ -176,6 +179,7 @@ class ChunkParser {
     int32_t raw = 0;
     if (!in.index(raw)) return false;
     const int64_t count = have(kind);
+    out.given[kind] = true;
     if (raw > 0) {
       c_.highest_ahead[kind] = std::max(c_.highest_ahead[kind], raw - count);
       out.index[kind] = raw - 1;
@@ -211,8 +215,8 @@ class ChunkParser {
     const auto t = static_cast<uint32_t>(c_.triangles.size());
     c_.triangles.push_back({static_cast<uint32_t>(a.index[kV]), static_cast<uint32_t>(b.index[kV]),
                             static_cast<uint32_t>(c.index[kV])});
-    corner_indices(c_.triangle_texcoords, t, {a.index[kVt], b.index[kVt], c.index[kVt]});
-    corner_indices(c_.triangle_normals, t, {a.index[kVn], b.index[kVn], c.index[kVn]});
+    corner_indices(c_.triangle_texcoords, t, a, b, c, kVt);
+    corner_indices(c_.triangle_normals, t, a, b, c, kVn);
     if (!(a.any_relative() || b.any_relative() || c.any_relative())) return;
     const Corner* corners[3] = {&a, &b, &c};
     for (uint32_t k = 0; k < 3; ++k)
@@ -223,12 +227,13 @@ class ChunkParser {
   // Appends triangle t's corner indices of one kind. The array stays empty while no triangle has
   // one (ObjChunk): a file of positions only never writes the two arrays of -1 (24 bytes a triangle
   // of fresh memory).
-  static void corner_indices(std::vector<std::array<int32_t, 3>>& v, uint32_t t, std::array<int32_t, 3> idx) {
+  static void corner_indices(std::vector<std::array<int32_t, 3>>& v, uint32_t t, const Corner& a,
+                             const Corner& b, const Corner& c, int kind) {
     if (v.empty()) {
-      if (idx == kNoCornerIndices) return;
+      if (!(a.given[kind] || b.given[kind] || c.given[kind])) return;
       v.assign(t, kNoCornerIndices);
     }
-    v.push_back(idx);
+    v.push_back({a.index[kind], b.index[kind], c.index[kind]});
   }
 
   ObjChunk& c_;

@@ -157,6 +157,16 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
   same_on("no_faces", quad);
 }
 
+// In 3 pieces the face's piece holds one vt, so its relative -2 is -1 inside the piece (a vt of the
+// piece before) until the join fixes it up: it must not read as "no texcoord" (the face lost its
+// texcoords and the fix-up wrote past an empty array). Found by the obj fuzzer.
+TEST(ObjFast, ARelativeIndexThatIsMinusOneInsideItsPieceIsKept) {
+  const std::string quad = "v 0 0 0\nv 3 0 0\nv 3 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 3 1\nv 0 3 1\n";
+  EXPECT_TRUE(same_on("relative_minus_one", quad + "vt 0 0\nvt 0 0\nvt$\nf -4 -3/-2 -1\n"));
+  EXPECT_TRUE(
+      expect_same_as_reference(RAYVEC_TEST_DATA + std::string("/fuzz/obj_relative_index_minus_one.obj")));
+}
+
 // Random files from a grammar of the fast subset and its near misses.
 TEST(ObjFast, SameAsTinyobjloaderOnRandomFiles) {
   std::mt19937 rng(7);
