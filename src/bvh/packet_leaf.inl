@@ -33,12 +33,47 @@ struct MtPacketRays {
   V lo;
 };
 
-// One triangle, slot i, broadcast to every lane (the `at` of mt_numerators_core).
+// A leaf's edges e2 = v2 − v0 and e1 = v1 − v0 as six rows (x, y, z of e2, then of e1: row k is
+// kRowV2 + k's edge), subtracted W slots at a time once per leaf instead of once per triangle and
+// packet step (benchmarks.md#decision-packet-leaf-edges). The same float subtraction per value as
+// the single-ray kernels' at.edge, so bit-identical. Slot i is at i − first in every row, first being
+// the leaf's first block start; a leaf of kMaxLeafTriangles slots spans at most three blocks.
+struct MtLeafEdges {
+  static constexpr uint32_t kStride = 3 * kSlotBlock;
+  alignas(64) float row[6][kStride];
+  uint32_t first;
+};
+
+template <class V>
+RAYVEC_INLINE void mt_leaf_edges(const TriangleArrays& T, uint32_t begin, uint32_t end, MtLeafEdges& e) {
+  e.first = begin / kSlotBlock * kSlotBlock;
+  for (uint32_t b = e.first; b < end; b += kSlotBlock) {
+    const float* block = T.v0x + slot_offset(b);
+    float* to = &e.row[0][b - e.first];
+    for (uint32_t k = 0; k < 6; ++k)
+      for (uint32_t j = 0; j < kSlotBlock; j += V::W) {
+        const V v = V::load_aligned(block + (kRowV2 + k) * kSlotBlock + j);
+        const V v0 = V::load_aligned(block + (kRowV0 + k % 3) * kSlotBlock + j);
+        (v - v0).store(to + k * MtLeafEdges::kStride + j);
+      }
+  }
+}
+
+// One triangle, slot i, broadcast to every lane (the `at` of mt_numerators_core), its edges from
+// the leaf's edge rows.
 template <class V>
 struct MtTriangleBroadcast {
   const float* p;  // T.v0x + slot_offset(i)
+  const float* e;  // &edges.row[0][i − edges.first]
   RAYVEC_INLINE V operator()(uint32_t row) const { return V::broadcast_kept(p + row * kSlotBlock); }
+  RAYVEC_INLINE V edge(uint32_t row, V) const {
+    return V::broadcast_kept(e + (row - kRowV2) * MtLeafEdges::kStride);
+  }
 };
+template <class V>
+RAYVEC_INLINE MtTriangleBroadcast<V> mt_broadcast(const TriangleArrays& T, const MtLeafEdges& e, uint32_t i) {
+  return {T.v0x + slot_offset(i), &e.row[0][i - e.first]};
+}
 
 // The end of a packet leaf: the lanes in `found` have a nearest hit in the leaf, t, u, v and the
 // slot's bits in `slot`; each replaces its lane's previous hit (earlier leaves) when nearer (equal
@@ -108,11 +143,12 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   };
   // Two triangles per iteration, one branch on both pre-tests (benchmarks.md#decision-packet-leaf-kernel);
   // the steps that pass are still taken in slot order.
+  MtLeafEdges edges;
+  mt_leaf_edges<V>(T, begin, end, edges);
   uint32_t i = begin;
   for (; i + 1 < end; i += 2) {
-    const MtNumerators<V> c0 = mt_numerator_values<V>(MtTriangleBroadcast<V>{T.v0x + slot_offset(i)}, q.r);
-    const MtNumerators<V> c1 =
-        mt_numerator_values<V>(MtTriangleBroadcast<V>{T.v0x + slot_offset(i + 1)}, q.r);
+    const MtNumerators<V> c0 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
+    const MtNumerators<V> c1 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i + 1), q.r);
     const unsigned p0 = bits(mt_sign_pretest<V, TminZero>(c0, active, neg_lo, hi));
     const unsigned p1 = bits(mt_sign_pretest<V, TminZero>(c1, active, neg_lo, hi));
     if ((p0 | p1) == 0) continue;
@@ -120,7 +156,7 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
     if (p1) step(c1, i + 1);  // its pre-test used the older, larger hi: still conservative
   }
   if (i < end) {
-    const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleBroadcast<V>{T.v0x + slot_offset(i)}, q.r);
+    const MtNumerators<V> c = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
     if (any(mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi))) step(c, i);
   }
   if (found == 0) return 0;

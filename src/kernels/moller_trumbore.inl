@@ -234,11 +234,14 @@ struct MtNumerators {
 // the slot's v0x position `p` (every row of a block lies a fixed distance from it, triangle_soa.h:
 // one pointer live instead of twelve row pointers reloaded per step). Both go through
 // mt_numerators_core, so a ray gets bit-identical numerators whichever way the lanes are laid out;
-// the values are fetched where they are used, as before the split.
+// the values are fetched where they are used, as before the split. `at.edge(kRowV2 + a, v0)` gives
+// the lanes of e2 (kRowV1 + a: e1), v − v0 by the fill's float subtraction, bit for bit
+// (triangle_soa.h); the packet kernel reads them from rows it subtracted once per leaf.
 template <class V>
 struct MtTriangleLanes {
   const float* p;  // T.v0x + slot_offset(i)
   RAYVEC_INLINE V operator()(uint32_t row) const { return V::load(p + row * kSlotBlock); }
+  RAYVEC_INLINE V edge(uint32_t row, V v0) const { return (*this)(row)-v0; }
 };
 template <class V>
 RAYVEC_INLINE MtTriangleLanes<V> mt_lanes(const TriangleArrays& T, uint32_t i) {
@@ -265,9 +268,9 @@ RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const At& at, const RayLanes<V
   // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
   // one xor fewer than folding it)
   // e2 = v2 − v0 and e1 = v1 − v0: the fill's float subtraction, bit for bit (triangle_soa.h)
-  const V e2x = at(kRowV2) - v0x, e2y = at(kRowV2 + 1) - v0y, e2z = at(kRowV2 + 2) - v0z;
+  const V e2x = at.edge(kRowV2, v0x), e2y = at.edge(kRowV2 + 1, v0y), e2z = at.edge(kRowV2 + 2, v0z);
   out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), sign);
-  const V e1x = at(kRowV1) - v0x, e1y = at(kRowV1 + 1) - v0y, e1z = at(kRowV1 + 2) - v0z;
+  const V e1x = at.edge(kRowV1, v0x), e1y = at.edge(kRowV1 + 1, v0y), e1z = at.edge(kRowV1 + 2, v0z);
   out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
   out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
   return out;
