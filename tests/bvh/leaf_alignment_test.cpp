@@ -125,5 +125,30 @@ TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
       }
 }
 
+// Leaves of one kernel step in AVX2's 8-wide trees on Intel, two elsewhere (bvh_traversal.h); a
+// BvhAccelerator's unmerged leaves keep to this CPU's rule.
+TEST(LeafAlignment, IntelAvx2EightWideTreesHoldOneKernelStepPerLeaf) {
+  EXPECT_EQ(default_leaf_steps(Isa::avx2, 8, "GenuineIntel"), 1);
+  EXPECT_EQ(default_leaf_steps(Isa::avx2, 16, "GenuineIntel"), 2);
+  EXPECT_EQ(default_leaf_steps(Isa::avx2, 8, "AuthenticAMD"), 2);
+  EXPECT_EQ(default_leaf_steps(Isa::avx512, 16, "GenuineIntel"), 2);
+  EXPECT_EQ(default_leaf_steps(Isa::avx512, 8, "AuthenticAMD"), 2);
+  if (!isa_supported(Isa::avx2))
+    GTEST_SKIP() << "no AVX2 on this CPU: the built-BvhAccelerator half is skipped";
+  const TriangleMesh soup = test::random_soup(4000, 0.01f, 5);
+  BvhOptions unmerged;
+  unmerged.merge_steps = 0;
+  const BvhAccelerator bvh(soup, TraceConfig{Isa::avx2, Intersector::mt}, unmerged);
+  ASSERT_EQ(bvh.tree().width(), 8);
+  const uint32_t most = 8 * uint32_t(default_leaf_steps(Isa::avx2, 8, cpu_features().vendor));
+  const auto* nodes = static_cast<const WideNode<8>*>(bvh.tree().arrays().nodes);
+  uint32_t largest = 0;
+  for (uint32_t n = 0; n < bvh.tree().node_count(); ++n)
+    for (uint32_t ref : nodes[n].ref)
+      if (ref != kEmptyRef && (ref & kLeafFlag)) largest = std::max(largest, (ref & 31) + 1);
+  EXPECT_LE(largest, most) << cpu_features().vendor;
+  EXPECT_GT(largest, 1u);
+}
+
 }  // namespace
 }  // namespace rayvec
