@@ -9,16 +9,16 @@
 // Exactness: each lane gets exactly what the single-ray `mt` kernel (closest_mt_float) gives for
 // its ray on the same slot range — same triangle id, bit-identical t, u, v, ties to the lowest id.
 // The arithmetic is mt_numerator_values and the ordered tests of mt_numerators_core (only the
-// triangle comes broadcast instead of loaded; the brute-force kernel's conservative one-mask sign
-// pre-test skips the steps no lane can pass; benchmarks.md#decision-packet-leaf-kernel), then the
-// same exact stage t = tn/|det| with tmin <= t < best, and u = (0 − un)/|det|, v = vn/|det| for the
-// winner. Slots are visited in increasing order with a strict `<`, so of equal t the lowest slot,
-// hence the lowest id (ids increase inside a range), wins, as in the single-ray lane reduction; the
-// comparison with the lane's previous hit (earlier leaves) is mt_finish's. The upper pre-test
-// threshold is per lane here (its own best·(1 + 2^-20)) where the single-ray kernel shares the
-// nearest of its lanes; both are conservative (every triangle that can be nearer passes), so the
-// exact stage alone decides — outside subnormal |det|, where no pre-test product is accurate to
-// 2^-20 and the two layouts may disagree about a hit that far from normal range.
+// triangle comes broadcast instead of loaded, its edges from rows subtracted once per leaf; the
+// brute-force kernel's conservative one-mask sign pre-test skips the steps no lane can pass;
+// benchmarks.md#decision-packet-leaf-kernel), then the same exact stage t = tn/|det| with
+// tmin <= t < best, and u = (0 − un)/|det|, v = vn/|det| for the winner. Slots are visited in increasing
+// order with a strict `<`, so of equal t the lowest slot, hence the lowest id (ids increase inside a range),
+// wins, as in the single-ray lane reduction; the comparison with the lane's previous hit (earlier leaves) is
+// mt_finish's. The upper pre-test threshold is per lane here (its own best·(1 + 2^-20)) where the single-ray
+// kernel shares the nearest of its lanes; both are conservative (every triangle that can be nearer passes),
+// so the exact stage alone decides — outside subnormal |det|, where no pre-test product is accurate to 2^-20
+// and the two layouts may disagree about a hit that far from normal range.
 //
 // Float `mt` has this kernel and float `watertight` its own (watertight_packet_leaf.inl); paper, mt64
 // and watertight64 packets keep the per-lane fallback (the single-ray kernel per active lane), as does
@@ -141,10 +141,10 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
     hi = best_t * widen;
     found |= bits(m);
   };
-  // Two triangles per iteration, one branch on both pre-tests (benchmarks.md#decision-packet-leaf-kernel);
-  // the steps that pass are still taken in slot order.
   MtLeafEdges edges;
   mt_leaf_edges<V>(T, begin, end, edges);
+  // Two triangles per iteration, one branch on both pre-tests (benchmarks.md#decision-packet-leaf-kernel);
+  // the steps that pass are still taken in slot order.
   uint32_t i = begin;
   for (; i + 1 < end; i += 2) {
     const MtNumerators<V> c0 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
