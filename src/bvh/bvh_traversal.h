@@ -49,11 +49,12 @@ inline constexpr std::size_t kWideNodeTriangles = 32768;
 int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
 int default_bvh_width(Isa isa, std::size_t triangles);
 
-// How many kernel steps (blocks of the kernel's width) a leaf of the binned SAH may hold by default
-// in a tree of `width`-wide nodes, on a CPU whose cpuid vendor is `vendor`: one for AVX2's 8-wide
-// trees on Intel (small meshes: shadow rays +12 % there, other sets mixed), two otherwise
-// (benchmarks.md#decision-leaf-size; not measured on AMD's AVX2 8-wide trees, which keep two).
-int default_leaf_steps(Isa isa, int width, std::string_view vendor);
+// How many kernel steps (blocks of the kernel's width) a leaf of the binned SAH over `triangles`
+// triangles may hold by default on a CPU whose cpuid vendor is `vendor`: one for the SIMD ISAs on
+// Intel below kWideNodeTriangles (small meshes: shadow rays and packets +5–13 % there), two
+// otherwise — large meshes lost or broke even with one (benchmarks.md#decision-leaf-size; not
+// measured on AMD, which keeps two).
+int default_leaf_steps(Isa isa, std::size_t triangles, std::string_view vendor);
 
 // Whether the traversals call the float leaf kernel of `intersector` directly instead of through
 // the kernel table, on a CPU whose cpuid vendor is `vendor`. `mt`: AVX2 everywhere and AVX-512 on

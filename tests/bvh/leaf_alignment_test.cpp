@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <utility>
 #include <vector>
 
@@ -125,29 +126,44 @@ TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
       }
 }
 
-// Leaves of one kernel step in AVX2's 8-wide trees on Intel, two elsewhere (bvh_traversal.h); a
-// BvhAccelerator's unmerged leaves keep to this CPU's rule.
-TEST(LeafAlignment, IntelAvx2EightWideTreesHoldOneKernelStepPerLeaf) {
-  EXPECT_EQ(default_leaf_steps(Isa::avx2, 8, "GenuineIntel"), 1);
-  EXPECT_EQ(default_leaf_steps(Isa::avx2, 16, "GenuineIntel"), 2);
-  EXPECT_EQ(default_leaf_steps(Isa::avx2, 8, "AuthenticAMD"), 2);
-  EXPECT_EQ(default_leaf_steps(Isa::avx512, 16, "GenuineIntel"), 2);
-  EXPECT_EQ(default_leaf_steps(Isa::avx512, 8, "AuthenticAMD"), 2);
-  if (!isa_supported(Isa::avx2))
-    GTEST_SKIP() << "no AVX2 on this CPU: the built-BvhAccelerator half is skipped";
-  const TriangleMesh soup = test::random_soup(4000, 0.01f, 5);
-  BvhOptions unmerged;
-  unmerged.merge_steps = 0;
-  const BvhAccelerator bvh(soup, TraceConfig{Isa::avx2, Intersector::mt}, unmerged);
-  ASSERT_EQ(bvh.tree().width(), 8);
-  const uint32_t most = 8 * uint32_t(default_leaf_steps(Isa::avx2, 8, cpu_features().vendor));
-  const auto* nodes = static_cast<const WideNode<8>*>(bvh.tree().arrays().nodes);
+// The most slots in one leaf of a wide tree.
+uint32_t largest_leaf(const WideBvh& tree) {
   uint32_t largest = 0;
-  for (uint32_t n = 0; n < bvh.tree().node_count(); ++n)
-    for (uint32_t ref : nodes[n].ref)
-      if (ref != kEmptyRef && (ref & kLeafFlag)) largest = std::max(largest, (ref & 31) + 1);
-  EXPECT_LE(largest, most) << cpu_features().vendor;
-  EXPECT_GT(largest, 1u);
+  const auto visit = [&](const auto* nodes) {
+    for (uint32_t n = 0; n < tree.node_count(); ++n)
+      for (uint32_t ref : nodes[n].ref)
+        if (ref != kEmptyRef && (ref & kLeafFlag)) largest = std::max(largest, (ref & 31) + 1);
+  };
+  if (tree.width() == 16)
+    visit(static_cast<const WideNode<16>*>(tree.arrays().nodes));
+  else
+    visit(static_cast<const WideNode<8>*>(tree.arrays().nodes));
+  return largest;
+}
+
+// Leaves of one kernel step for Intel's small meshes, two elsewhere (bvh_traversal.h); a
+// BvhAccelerator's unmerged leaves keep to this CPU's rule on every SIMD ISA it has.
+TEST(LeafAlignment, IntelSmallMeshesHoldOneKernelStepPerLeaf) {
+  for (const Isa isa : {Isa::avx2, Isa::avx512}) {
+    EXPECT_EQ(default_leaf_steps(isa, kWideNodeTriangles - 1, "GenuineIntel"), 1);
+    EXPECT_EQ(default_leaf_steps(isa, kWideNodeTriangles, "GenuineIntel"), 2);
+    EXPECT_EQ(default_leaf_steps(isa, 100, "AuthenticAMD"), 2);
+  }
+  EXPECT_EQ(default_leaf_steps(Isa::scalar, 100, "GenuineIntel"), 2);
+  const TriangleMesh soup = test::random_soup(4000, 0.01f, 5);
+  for (const Isa isa : {Isa::avx2, Isa::avx512}) {
+    if (!isa_supported(isa)) {
+      std::printf("skipped ISA %s: not on this CPU\n", isa_name(isa));
+      continue;
+    }
+    BvhOptions unmerged;
+    unmerged.merge_steps = 0;
+    const BvhAccelerator bvh(soup, TraceConfig{isa, Intersector::mt}, unmerged);
+    const uint32_t block = isa == Isa::avx512 ? 16 : 8;
+    const uint32_t most = block * uint32_t(default_leaf_steps(isa, soup.size(), cpu_features().vendor));
+    EXPECT_LE(largest_leaf(bvh.tree()), most) << isa_name(isa) << " " << cpu_features().vendor;
+    EXPECT_GT(largest_leaf(bvh.tree()), 1u) << isa_name(isa);
+  }
 }
 
 }  // namespace
