@@ -116,9 +116,9 @@ class Cursor {
 
 struct Corner {
   std::array<int32_t, 3> index{0, -1, -1};  // v, vt, vn; 0-based (see ObjChunk), -1 = none
+  // Which kinds the corner names. A relative index is local to the piece until the join fixes it
+  // up, so -1 there is an element of an earlier piece, not "none": only `given` tells.
   std::array<bool, 3> given{true, false, false};
-  // A relative index is local to the piece until it is fixed up: -1 there is a vertex of an
-  // earlier piece, not "none" (`given` tells).
   std::array<bool, 3> relative{false, false, false};
   bool any_relative() const { return relative[0] || relative[1] || relative[2]; }
 };
