@@ -65,9 +65,9 @@ template <class V>
 struct MtTriangleBroadcast {
   const float* p;  // T.v0x + slot_offset(i)
   const float* e;  // &edges.row[0][i − edges.first]
-  RAYVEC_INLINE V operator()(uint32_t row) const { return V::broadcast_kept(p + row * kSlotBlock); }
+  RAYVEC_INLINE V operator()(uint32_t row) const { return V::broadcast(p[row * kSlotBlock]); }
   RAYVEC_INLINE V edge(uint32_t row, V) const {
-    return V::broadcast_kept(e + (row - kRowV2) * MtLeafEdges::kStride);
+    return V::broadcast(e[(row - kRowV2) * MtLeafEdges::kStride]);
   }
 };
 template <class V>

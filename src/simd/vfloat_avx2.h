@@ -25,15 +25,6 @@ struct vfloat {
   static RAYVEC_INLINE vfloat load(const float* p) { return {_mm256_loadu_ps(p)}; }
   static RAYVEC_INLINE vfloat load_aligned(const float* p) { return {_mm256_load_ps(p)}; }  // 32 bytes
   static RAYVEC_INLINE vfloat broadcast(float x) { return {_mm256_set1_ps(x)}; }
-  // *p in every lane, kept a vector: arithmetic on the result stays full-width with the value
-  // broadcast from memory (a load-port operation). Plain broadcast(*p) lets g++ do the arithmetic
-  // on the scalar first and broadcast the result from a register, a shuffle on the port the
-  // vector FMAs also use (benchmarks.md#decision-kept-broadcast).
-  static RAYVEC_INLINE vfloat broadcast_kept(const float* p) {
-    __m256 x = _mm256_set1_ps(*p);
-    asm("" : "+v"(x));  // an empty barrier: the compiler must hold x as a vector here
-    return {x};
-  }
   static RAYVEC_INLINE vfloat index_bits(uint32_t base) {
     const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     return {_mm256_castsi256_ps(_mm256_add_epi32(_mm256_set1_epi32(int(base)), iota))};
