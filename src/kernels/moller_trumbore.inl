@@ -295,7 +295,7 @@ RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const At& at, const RayLanes<V>
   return out;
 }
 
-// The brute-force pre-test with ONE mask instruction (benchmarks.md#decision-sign-pretest): on
+// The pre-test with ONE mask instruction (MtPretest::sign_bits; benchmarks.md#decision-sign-pretest): on
 // AMD's Zen 5 every instruction that writes a mask register competes with the 19 multiplies/FMAs of
 // a step for the same two pipes, while adds and bitwise ops have pipes of their own. So the five
 // tests are sign bits — u·|det| = 0 − un, v·|det| = vn + 0, (1 − u − v)·|det| = |det| − (u +
@@ -313,6 +313,31 @@ RAYVEC_INLINE typename V::Mask mt_sign_pretest(const MtNumerators<V>& c, typenam
   const V low = TminZero ? c.tn + zero : fmadd(neg_lo, c.adet, c.tn);
   const V nearer = fmsub(hi, c.adet, c.tn);
   return active & sign_clear(or3(or3(u, v, w), low, nearer));
+}
+
+// The same pre-test as ordered compares chained through the lane mask (MtPretest::ordered_compares;
+// on AVX-512 each compare writes a mask register under the one before): two instructions fewer
+// than the sign bits' normalising adds, ORs and test, faster where mask writes are not what limits
+// a step (benchmarks.md#decision-sign-pretest).
+// Conservative like mt_sign_pretest (tn < hi·|det| holds for every t <= best: hi is widened by
+// 2^-20), so the exact stage sees the same lanes; NaN and |det| = 0 already fail here.
+template <class V, bool TminZero>
+RAYVEC_INLINE typename V::Mask mt_ordered_pretest(const MtNumerators<V>& c, typename V::Mask active, V neg_lo,
+                                                  V hi) {
+  const V zero = V::broadcast(0.0f);
+  const typename V::Mask m = active & mt_edges(c) & (c.tn < hi * c.adet);
+  if constexpr (TminZero)
+    return m & (c.tn >= zero);
+  else
+    return m & (fmadd(neg_lo, c.adet, c.tn) >= zero);
+}
+
+template <class V, bool TminZero, MtPretest P>
+RAYVEC_INLINE typename V::Mask mt_pretest(const MtNumerators<V>& c, typename V::Mask active, V neg_lo, V hi) {
+  if constexpr (P == MtPretest::sign_bits)
+    return mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi);
+  else
+    return mt_ordered_pretest<V, TminZero>(c, active, neg_lo, hi);
 }
 
 template <class V, bool TminZero>
@@ -346,11 +371,11 @@ struct MtBest {
   bool found;
 };
 
-template <class V, bool TminZero>
+template <class V, bool TminZero, MtPretest P>
 RAYVEC_INLINE void mt_closest_step(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
                                    typename V::Mask active, V neg_lo, MtBest<V>& b) {
   const MtNumerators<V> c = mt_numerator_values<V>(mt_lanes<V>(T, i), r);
-  const typename V::Mask pre = mt_sign_pretest<V, TminZero>(c, active, neg_lo, b.hi);
+  const typename V::Mask pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, b.hi);
   if (!any(pre)) return;
   // the ordered tests (NaN and |det| = 0 fail them) and the exact depth test, only for steps where
   // a lane may be nearer; ties go to the lower id later
@@ -413,7 +438,7 @@ RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
 }
 
 // R rays (1 or 2) against [begin, end): each triangle step is loaded once for all R rays.
-template <class V, bool TminZero, int R>
+template <class V, bool TminZero, int R, MtPretest P = MtPretest::sign_bits>
 void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
                            Hit* hits) {
   constexpr int W = V::W;
@@ -429,14 +454,14 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
   if (i % W != 0 && i < end) {
     const uint32_t head = first_step(i, W);
     for (int k = 0; k < R; ++k)
-      mt_closest_step<V, TminZero>(T, head, q[k].r, step_lanes<V>(head, begin, end), neg_lo[k], q[k].b);
+      mt_closest_step<V, TminZero, P>(T, head, q[k].r, step_lanes<V>(head, begin, end), neg_lo[k], q[k].b);
     i = head + W;
   }
   for (; end - i >= uint32_t(W) && i < end; i += W)
-    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero>(T, i, q[k].r, all, neg_lo[k], q[k].b);
+    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(T, i, q[k].r, all, neg_lo[k], q[k].b);
   if (i < end)
     for (int k = 0; k < R; ++k)
-      mt_closest_step<V, TminZero>(T, i, q[k].r, first_lanes(V{}, end - i), neg_lo[k], q[k].b);
+      mt_closest_step<V, TminZero, P>(T, i, q[k].r, first_lanes(V{}, end - i), neg_lo[k], q[k].b);
   for (int k = 0; k < R; ++k) mt_finish<V>(T, q[k].b, q[k].initial, hits[k]);
 }
 
@@ -446,7 +471,7 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
 // ids, so a tie keeps the earlier hit. Same hit as closest_mt_float_rays (whose per-lane best
 // vectors are reduced at the end), but only the ray's lanes and the pre-test threshold stay live
 // across steps: the single-ray leaf then fits AVX2's 16 vector registers without spilling them.
-template <class V, bool TminZero>
+template <class V, bool TminZero, MtPretest P = MtPretest::sign_bits>
 void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
   constexpr uint32_t W = V::W;
   const RayLanes<V> r = broadcast_ray<V>(ray);
@@ -458,7 +483,7 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
   const V neg_lo = V::broadcast(0.0f) - V::broadcast(mt_lower(ray.tmin));
   const auto step = [&](uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
     const MtNumerators<V> c = mt_numerator_values<V>(mt_lanes<V>(T, i), r);
-    const typename V::Mask pre = mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi);
+    const typename V::Mask pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, hi);
     if (!any(pre)) return;
     const V t = c.tn / c.adet;
     const typename V::Mask m =
@@ -491,27 +516,27 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
 }
 
 // tmin = 0 (camera and most secondary rays) drops the multiply of the lower depth pre-test.
-template <class V>
+template <class V, MtPretest P = MtPretest::sign_bits>
 void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
   if (!finite_ray(ray)) return;
   if (ray.tmin == 0.0f)
-    closest_mt_float_one<V, true>(T, begin, end, ray, hit);
+    closest_mt_float_one<V, true, P>(T, begin, end, ray, hit);
   else
-    closest_mt_float_one<V, false>(T, begin, end, ray, hit);
+    closest_mt_float_one<V, false, P>(T, begin, end, ray, hit);
 }
 
-template <class V>
+template <class V, MtPretest P = MtPretest::sign_bits>
 void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
                            Hit* hits) {
   if (!finite_ray(rays[0]) || !finite_ray(rays[1])) {
-    closest_mt_float<V>(T, begin, end, rays[0], hits[0]);
-    closest_mt_float<V>(T, begin, end, rays[1], hits[1]);
+    closest_mt_float<V, P>(T, begin, end, rays[0], hits[0]);
+    closest_mt_float<V, P>(T, begin, end, rays[1], hits[1]);
     return;
   }
   if (rays[0].tmin == 0.0f && rays[1].tmin == 0.0f)
-    closest_mt_float_rays<V, true, 2>(T, begin, end, rays, hits);
+    closest_mt_float_rays<V, true, 2, P>(T, begin, end, rays, hits);
   else
-    closest_mt_float_rays<V, false, 2>(T, begin, end, rays, hits);
+    closest_mt_float_rays<V, false, 2, P>(T, begin, end, rays, hits);
 }
 
 // One ray's constants of the float `mt` any-hit kernel: its lanes, the pre-test's lower and upper
@@ -557,11 +582,11 @@ bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, co
   return occluded_mt_float_lanes<V>(T, begin, end, mt_any_hit_ray<V>(ray), filter);
 }
 
-template <class V, Intersector I>
+template <class V, Intersector I, MtPretest P = MtPretest::sign_bits>
 constexpr TriangleKernels make_kernels(Isa isa) {
   if constexpr (I == Intersector::mt && sizeof(typename V::Scalar) == 4)
     return TriangleKernels{
-        isa, I, V::W, &closest_mt_float<V>, &occluded_mt_float<V>, &closest_pair_mt_float<V>};
+        isa, I, V::W, &closest_mt_float<V, P>, &occluded_mt_float<V>, &closest_pair_mt_float<V, P>};
   else
     return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
 }

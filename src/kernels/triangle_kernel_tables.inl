@@ -6,6 +6,8 @@ namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
 constinit const TriangleKernels kPaper = make_kernels<vfloat, Intersector::paper>(kThisIsa);
 constinit const TriangleKernels kMt = make_kernels<vfloat, Intersector::mt>(kThisIsa);
+constinit const TriangleKernels kMtOrdered =
+    make_kernels<vfloat, Intersector::mt, MtPretest::ordered_compares>(kThisIsa);
 constinit const TriangleKernels kMt64 = make_kernels<vdouble, Intersector::mt64>(kThisIsa);
 constinit const TriangleKernels kWatertight =
     make_watertight_kernels<vfloat, Intersector::watertight>(kThisIsa);
@@ -13,7 +15,7 @@ constinit const TriangleKernels kWatertight64 =
     make_watertight_kernels<vdouble, Intersector::watertight64>(kThisIsa);
 }  // namespace
 
-const TriangleKernels& triangle_kernels(Intersector intersector) {
+const TriangleKernels& triangle_kernels(Intersector intersector, MtPretest pretest) {
   switch (intersector) {
     case Intersector::paper: return kPaper;
     case Intersector::mt64: return kMt64;
@@ -21,5 +23,5 @@ const TriangleKernels& triangle_kernels(Intersector intersector) {
     case Intersector::watertight64: return kWatertight64;
     case Intersector::mt: break;
   }
-  return kMt;
+  return pretest == MtPretest::ordered_compares ? kMtOrdered : kMt;
 }

@@ -3,6 +3,7 @@
 // per ray.
 #pragma once
 #include <cstdint>
+#include <string_view>
 
 #include "kernels/intersector.h"
 #include "platform/isa.h"
@@ -43,18 +44,32 @@ struct TriangleKernels {
                        Hit* hits) = nullptr;
 };
 
-// The table for an ISA the CPU supports (checked by the caller through isa_supported).
+// How the float `mt` closest-hit kernels pre-test a step before its exact depth test (moller_trumbore.inl):
+// both are conservative and give the same hits, bit for bit; they differ only in speed, which depends
+// on how a CPU executes mask instructions (benchmarks.md#decision-sign-pretest).
+//   sign_bits         — the five conditions as sign bits, ORed and tested by one mask instruction
+//   ordered_compares  — the five conditions as ordered compares chained through the lane mask
+enum class MtPretest { sign_bits, ordered_compares };
+
+// The pre-test the `mt` table of `isa` uses by default on a CPU whose cpuid vendor is `vendor`:
+// ordered_compares for AVX-512 on GenuineIntel, sign_bits otherwise.
+MtPretest default_mt_pretest(Isa isa, std::string_view vendor);
+
+// The table for an ISA the CPU supports (checked by the caller through isa_supported), with the
+// running CPU's default_mt_pretest.
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector);
+// The same with the `mt` pre-test chosen (other intersectors ignore it).
+const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector, MtPretest pretest);
 
 // Per-ISA entry points, each defined in its own unit (triangle_kernels_<isa>.cpp).
 namespace scalar {
-const TriangleKernels& triangle_kernels(Intersector intersector);
+const TriangleKernels& triangle_kernels(Intersector intersector, MtPretest pretest);
 }
 namespace avx2 {
-const TriangleKernels& triangle_kernels(Intersector intersector);
+const TriangleKernels& triangle_kernels(Intersector intersector, MtPretest pretest);
 }
 namespace avx512 {
-const TriangleKernels& triangle_kernels(Intersector intersector);
+const TriangleKernels& triangle_kernels(Intersector intersector, MtPretest pretest);
 }
 
 }  // namespace rayvec

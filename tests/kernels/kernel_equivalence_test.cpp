@@ -11,6 +11,7 @@
 // watertight), again only within 1e-5 of an edge.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -257,6 +258,82 @@ INSTANTIATE_TEST_SUITE_P(AllIsas, KernelEquivalence, ::testing::ValuesIn(all_par
                            return std::string(isa_name(info.param.isa)) + "_" +
                                   intersector_name(info.param.intersector);
                          });
+
+// Hard cases for the `mt` pre-tests: one triangle three times (ties across lanes and steps: the
+// lowest id wins), degenerate ones, a triangle whose plane holds a ray, among random filler; rays
+// at vertices and edges, with tmin or tmax exactly at a hit, in a plane, with NaN and zero parts.
+Scene hard_scene() {
+  Scene s{"hard", paper_triangles(60, 9), {}, true};
+  const Vec3f a{0.2f, 0.2f, 2.0f}, b{0.8f, 0.2f, 2.0f}, c{0.2f, 0.8f, 2.0f};
+  for (uint32_t at : {5u, 17u, 40u}) {
+    const auto n = uint32_t(s.mesh.positions.size());
+    s.mesh.triangles.insert(s.mesh.triangles.begin() + at, std::array<uint32_t, 3>{n, n + 1, n + 2});
+    for (const Vec3f& p : {a, b, c}) s.mesh.positions.push_back(p);
+  }
+  s.mesh.add_triangle({0.4f, 0.4f, 1.0f}, {0.5f, 0.5f, 1.0f}, {0.6f, 0.6f, 1.0f});  // collinear
+  s.mesh.add_triangle({0.3f, 0.3f, 1.5f}, {0.3f, 0.3f, 1.5f}, {0.3f, 0.3f, 1.5f});  // a point
+  const float nan = std::nanf("");
+  const Vec3f down{0, 0, 1};
+  for (const Vec3f& target : {a, b, c, (a + b) * 0.5f, (b + c) * 0.5f, Vec3f{0.4f, 0.4f, 2.0f}}) {
+    const Vec3f o = target - Vec3f{0.01f, 0.02f, 3.0f};
+    s.rays.push_back(Ray{o, target - o});
+    s.rays.push_back(Ray{o, target - o, 1.0f});        // tmin exactly at the hit
+    s.rays.push_back(Ray{o, target - o, 0.0f, 1.0f});  // tmax exactly at the hit
+    s.rays.push_back(Ray{o, target - o, 1.0f, 1.0f});  // both
+  }
+  s.rays.push_back(Ray{{0.0f, 0.5f, 2.0f}, {1, 0, 0}});  // in the duplicates' plane
+  s.rays.push_back(Ray{{0.4f, 0.4f, 0.0f}, down});       // through the collinear one and the point
+  s.rays.push_back(Ray{{nan, 0.4f, 0.0f}, down});
+  s.rays.push_back(Ray{{0.4f, 0.4f, 0.0f}, {0, nan, 1}});
+  s.rays.push_back(Ray{{0.4f, 0.4f, 0.0f}, {0, 0, 0}});
+  s.rays.push_back(Ray{{0.4f, 0.4f, 0.0f}, down, nan});
+  SplitMix64 rng(31);
+  for (int i = 0; i < 500; ++i) s.rays.push_back(Ray{random_point(rng, -0.5f, 1.5f), random_direction(rng)});
+  return s;
+}
+
+// The float `mt` kernels' two pre-tests (MtPretest) are conservative forms of the same conditions,
+// so on every ISA they give the same hits bit for bit, one ray at a time and in batches (pairs).
+TEST(MtPretest, BothFormsGiveTheSameHitsOnEveryIsa) {
+  for (Isa isa : kAllIsas) {
+    if (!isa_supported(isa)) {
+      std::printf("[ skipped ] %s: this CPU lacks it\n", isa_name(isa));
+      continue;
+    }
+    const TriangleKernels& sign = triangle_kernels(isa, Intersector::mt, MtPretest::sign_bits);
+    const TriangleKernels& ordered = triangle_kernels(isa, Intersector::mt, MtPretest::ordered_compares);
+    ASSERT_NE(sign.closest, ordered.closest) << isa_name(isa);
+    for (const Scene& s : {random_scene(), sphere_scene(), grid_scene(), hard_scene()}) {
+      const TriangleSoA soa(s.mesh);
+      const std::vector<Hit> one = trace(sign, soa, s.rays), got = trace(ordered, soa, s.rays);
+      std::vector<Hit> batch(s.rays.size());
+      closest_batch(ordered, soa.arrays(), 0, soa.size(), s.rays.data(), batch.data(), batch.size());
+      int hits = 0;
+      for (std::size_t i = 0; i < s.rays.size(); ++i) {
+        hits += one[i].hit();
+        for (const Hit* h : {&got[i], static_cast<const Hit*>(&batch[i])}) {
+          ASSERT_EQ(h->tri, one[i].tri) << isa_name(isa) << " " << s.name << " ray " << i;
+          if (h->hit()) {
+            ASSERT_EQ(h->t, one[i].t) << isa_name(isa) << " " << s.name << " ray " << i;
+            ASSERT_EQ(h->u, one[i].u) << isa_name(isa) << " " << s.name << " ray " << i;
+            ASSERT_EQ(h->v, one[i].v) << isa_name(isa) << " " << s.name << " ray " << i;
+          }
+        }
+      }
+      EXPECT_GT(hits * 20, int(s.rays.size())) << s.name;
+    }
+  }
+}
+
+TEST(MtPretest, OrderedComparesOnlyForIntelAvx512) {
+  EXPECT_EQ(default_mt_pretest(Isa::avx512, "GenuineIntel"), MtPretest::ordered_compares);
+  EXPECT_EQ(default_mt_pretest(Isa::avx512, "AuthenticAMD"), MtPretest::sign_bits);
+  EXPECT_EQ(default_mt_pretest(Isa::avx2, "GenuineIntel"), MtPretest::sign_bits);
+  EXPECT_EQ(default_mt_pretest(Isa::scalar, "GenuineIntel"), MtPretest::sign_bits);
+  for (Isa isa : supported_isas())  // the two-argument table is the running CPU's default
+    EXPECT_EQ(&triangle_kernels(isa, Intersector::mt),
+              &triangle_kernels(isa, Intersector::mt, default_mt_pretest(isa, cpu_features().vendor)));
+}
 
 // The paper's scalar versions (Table 1's original and optimized) against the scalar `paper` kernel:
 // the same arithmetic, so the same bits.
