@@ -25,7 +25,9 @@ void register_info_command(CommandLine& cli) {
     for (Isa isa : kAllIsas) {
       const bool ok = isa_supported(isa);
       std::printf("  %-7s %s", isa_name(isa), ok ? "supported" : "not supported");
-      if (ok) std::printf(", %d floats per step", triangle_kernels(isa, Intersector::mt).width);
+      if (ok)
+        std::printf(", %d floats per step, mt pre-test: %s", triangle_kernels(isa, Intersector::mt).width,
+                    mt_pretest_name(default_mt_pretest(isa, f.vendor)));
       std::printf("\n");
     }
     std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());

@@ -14,6 +14,10 @@ MtPretest default_mt_pretest(Isa isa, std::string_view vendor) {
   return isa == Isa::avx512 && vendor == "GenuineIntel" ? MtPretest::ordered_compares : MtPretest::sign_bits;
 }
 
+const char* mt_pretest_name(MtPretest pretest) {
+  return pretest == MtPretest::ordered_compares ? "ordered compares" : "sign bits";
+}
+
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector) {
   return triangle_kernels(isa, intersector, default_mt_pretest(isa, cpu_features().vendor));
 }

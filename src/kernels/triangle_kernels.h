@@ -54,6 +54,8 @@ enum class MtPretest { sign_bits, ordered_compares };
 // The pre-test the `mt` table of `isa` uses by default on a CPU whose cpuid vendor is `vendor`:
 // ordered_compares for AVX-512 on GenuineIntel, sign_bits otherwise.
 MtPretest default_mt_pretest(Isa isa, std::string_view vendor);
+// "sign bits" | "ordered compares" (what `rayvec info` prints).
+const char* mt_pretest_name(MtPretest pretest);
 
 // The table for an ISA the CPU supports (checked by the caller through isa_supported), with the
 // running CPU's default_mt_pretest.
