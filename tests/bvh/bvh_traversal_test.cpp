@@ -13,6 +13,7 @@
 #include "bvh/bvh_traversal.h"
 #include "bvh_cases.h"
 #include "bvh_scenes.h"
+#include "wide_leaves.h"
 
 namespace rayvec {
 namespace {
@@ -237,16 +238,10 @@ TEST_P(BvhTraversal, MergedLeavesWithPaddingMatchBruteForceThroughTheOrigin) {
   sah.leaf_block = 3;
   const BvhAccelerator bvh(mesh, config(), options(sah));
   bool padding_in_a_leaf = false;
-  const auto scan = [&](const auto* nodes) {
-    for (uint32_t i = 0; i < bvh.tree().node_count(); ++i)
-      for (const uint32_t ref : nodes[i].ref)
-        if (ref != kEmptyRef && (ref & kLeafFlag))
-          for (uint32_t s = (ref >> 5) & (kMaxLeafBegin - 1), e = s + (ref & 31) + 1; s < e; ++s)
-            padding_in_a_leaf = padding_in_a_leaf || bvh.triangles().id(s) < 0;
-  };
-  if (bvh.tree().width() == 8) scan(static_cast<const WideNode<8>*>(bvh.tree().arrays().nodes));
-  if (bvh.tree().width() == 16) scan(static_cast<const WideNode<16>*>(bvh.tree().arrays().nodes));
-  if (bvh.tree().width() == 4) scan(static_cast<const WideNode<4>*>(bvh.tree().arrays().nodes));
+  test::for_each_leaf(bvh.tree(), [&](uint32_t begin, uint32_t count) {
+    for (uint32_t s = begin; s < begin + count; ++s)
+      padding_in_a_leaf = padding_in_a_leaf || bvh.triangles().id(s) < 0;
+  });
   if (triangle_kernels(config().isa, config().intersector).width > 1) {  // scalar kernels need no padding
     EXPECT_TRUE(padding_in_a_leaf) << "no merged leaf covers padding: the case is not tested";
   }

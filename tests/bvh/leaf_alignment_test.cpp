@@ -17,6 +17,7 @@
 #include "platform/isa.h"
 #include "kernels/triangle_soa.h"
 #include "bvh_scenes.h"
+#include "wide_leaves.h"
 
 namespace rayvec {
 namespace {
@@ -117,27 +118,15 @@ TEST(LeafAlignment, BvhDefaultsToSixteenWideNodesForLargeMeshesAndIntelAvx512) {
   unmerged.merge_steps = 0;
   const BvhAccelerator bvh(big, TraceConfig{Isa::avx512, Intersector::mt}, unmerged);
   EXPECT_EQ(bvh.tree().width(), 16);
-  const auto* nodes = static_cast<const WideNode<16>*>(bvh.tree().arrays().nodes);
-  for (uint32_t n = 0; n < bvh.tree().node_count(); ++n)
-    for (uint32_t ref : nodes[n].ref)
-      if (ref != kEmptyRef && (ref & kLeafFlag)) {
-        const uint32_t count = (ref & 31) + 1;
-        ASSERT_EQ(steps((ref >> 5) & (kMaxLeafBegin - 1), count, 16), steps(0, count, 16));
-      }
+  test::for_each_leaf(bvh.tree(), [&](uint32_t begin, uint32_t count) {
+    EXPECT_EQ(steps(begin, count, 16), steps(0, count, 16)) << "leaf at slot " << begin;
+  });
 }
 
 // The most slots in one leaf of a wide tree.
 uint32_t largest_leaf(const WideBvh& tree) {
   uint32_t largest = 0;
-  const auto visit = [&](const auto* nodes) {
-    for (uint32_t n = 0; n < tree.node_count(); ++n)
-      for (uint32_t ref : nodes[n].ref)
-        if (ref != kEmptyRef && (ref & kLeafFlag)) largest = std::max(largest, (ref & 31) + 1);
-  };
-  if (tree.width() == 16)
-    visit(static_cast<const WideNode<16>*>(tree.arrays().nodes));
-  else
-    visit(static_cast<const WideNode<8>*>(tree.arrays().nodes));
+  test::for_each_leaf(tree, [&](uint32_t, uint32_t count) { largest = std::max(largest, count); });
   return largest;
 }
 
