@@ -10,8 +10,10 @@
 #include <memory>
 #include <new>
 
-#include "platform/large_buffer.h"
+#include "bvh/build_prim.h"
+#include "bvh/spatial_split.h"
 #include "geometry/triangle_mesh.h"
+#include "platform/large_buffer.h"
 #include "simd/float4_sse.h"
 
 namespace rayvec {
@@ -25,16 +27,16 @@ constexpr int kBinningChunks = 4;
 // fewer triangles: build on the calling thread (a 1,000-triangle build takes ~0.3 ms, a parallel
 // region a few µs when the team's threads are awake)
 constexpr std::size_t kParallelBuild = 1024;
+// Spatial splits (SahConfig::split_budget): bins per axis, and how much the children of an object
+// split must overlap for one to be tried: their common box's area relative to the root's (Stich et
+// al.'s α, which keeps splits out of the tree's small bottom nodes) and to the node's own (which
+// keeps the search off nodes whose object split is already nearly disjoint, as on a mesh of small,
+// even triangles; benchmarks.md#decision-spatial-splits)
+constexpr int kSpatialBins = 16;
+constexpr float kSplitOverlap = 1e-5f;
+constexpr float kSplitNodeOverlap = 0.3f;
 
-// One triangle's box and id, moved (not indexed) by the partitions so every pass reads memory in
-// order — random access through an index array was the builder's bottleneck.
-struct alignas(32) Prim {
-  float lo[3];
-  uint32_t id;
-  float hi[3];
-  float pad;  // 0, so lane 3 of the binning's 4-lane centroid stays 0
-  float centroid(int a) const { return (lo[a] + hi[a]) * 0.5f; }
-};
+using Prim = BuildPrim;
 
 // min/max that keep the first operand when the second is NaN (a NaN vertex never widens a box);
 // branch-free (minss/maxss).
@@ -118,13 +120,20 @@ int bin_of(float c, float lo, float scale, int bins) {
 class Builder {
  public:
   Builder(const TriangleMesh& mesh, const SahConfig& config, BinaryBvh& out)
-      : config_(config), bins_(std::clamp(config.bins, 2, kMaxBins)), out_(out) {
+      : config_(config),
+        bins_(std::clamp(config.bins, 2, kMaxBins)),
+        out_(out),
+        splitter_(mesh, kSpatialBins, config.leaf_block) {
     const std::size_t n = mesh.size();
+    // room for the references spatial splits add (split_budget of n at most)
+    const double budget = std::clamp(double(config.split_budget), 0.0, 1.0);
+    const std::size_t capacity = n + std::size_t(double(n) * budget);
     // uninitialized (no serial zeroing of 32 bytes a triangle): the parallel loop writes each one
-    prims_buffer_ = allocate_large_buffer(sizeof(Prim) * n);
+    prims_buffer_ = allocate_large_buffer(sizeof(Prim) * capacity);
     prims_ = static_cast<Prim*>(prims_buffer_.get());
     count_ = n;
-    out_.order.resize(n);
+    capacity_ = capacity;
+    out_.order.resize(capacity);
     const auto count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static) if (n >= kParallelBuild)
     for (std::int64_t i = 0; i < count; ++i) {
@@ -141,10 +150,11 @@ class Builder {
     // at most 2n - 1 nodes (children are allocated in pairs), uninitialized: the tree uses a few
     // percent of them, so only the pages written are ever touched (zeroing 2n nodes serially cost
     // more than the parallel parts of the build it preceded); run() copies out the used prefix
-    if (n > 0) nodes_.reset(static_cast<BinaryNode*>(::operator new(sizeof(BinaryNode) * (2 * n - 1))));
+    if (n > 0)
+      nodes_.reset(static_cast<BinaryNode*>(::operator new(sizeof(BinaryNode) * (2 * capacity - 1))));
     // uninitialized (no serial zeroing): the partitions of the large ranges go through it
     if (n >= kParallelPartition) {
-      scratch_buffer_ = allocate_large_buffer(sizeof(Prim) * n);
+      scratch_buffer_ = allocate_large_buffer(sizeof(Prim) * capacity);
       scratch_ = static_cast<Prim*>(scratch_buffer_.get());
     }
   }
@@ -152,11 +162,14 @@ class Builder {
   void run() {
     if (count_ == 0) return;
     const auto n = static_cast<uint32_t>(count_);
+    const BBox root = range_box(0, n, false, 0);
+    root_area_ = root.half_area();
 #pragma omp parallel if (n >= kParallelBuild)
 #pragma omp single nowait
-    build(0, 0, n, range_box(0, n, false, 0), 0);
+    build(0, 0, n, uint32_t(capacity_), root, 0);
     out_.nodes.assign(nodes_.get(), nodes_.get() + next_node_.load());
     nodes_.reset();
+    if (capacity_ > count_) close_gaps();
   }
 
  private:
@@ -404,7 +417,39 @@ class Builder {
     return i;
   }
 
-  void build(uint32_t node, uint32_t begin, uint32_t end, const BBox& box, int depth,
+  // With room for spatial splits the ranges leave gaps (each range's unused room): the leaves are
+  // moved together, in order, so `order` holds exactly the leaves' slots.
+  void close_gaps() {
+    std::vector<std::pair<uint32_t, uint32_t>> leaves;  // (first, node)
+    for (uint32_t k = 0; k < out_.nodes.size(); ++k)
+      if (out_.nodes[k].leaf()) leaves.emplace_back(out_.nodes[k].first, k);
+    std::sort(leaves.begin(), leaves.end());
+    uint32_t next = 0;
+    for (const auto& [first, k] : leaves) {
+      BinaryNode& leaf = out_.nodes[k];
+      std::copy(out_.order.begin() + first, out_.order.begin() + first + leaf.count,
+                out_.order.begin() + next);
+      leaf.first = next;
+      next += leaf.count;
+    }
+    out_.order.resize(next);
+  }
+
+  // Whether the children of an object split overlap enough for a spatial split to be tried
+  // (kSplitOverlap, kSplitNodeOverlap).
+  bool overlapping(const Split& split, const BBox& box) const {
+    BBox common;
+    for (int a = 0; a < 3; ++a) {
+      common.lo[a] = std::max(split.left.lo[a], split.right.lo[a]);
+      common.hi[a] = std::min(split.left.hi[a], split.right.hi[a]);
+    }
+    const float area = common.half_area();
+    return area > kSplitOverlap * root_area_ && area > kSplitNodeOverlap * box.half_area();
+  }
+
+  // Builds the subtree of the references [begin, end) into `node`; [end, cap) is room the subtree
+  // may fill with the references its spatial splits add.
+  void build(uint32_t node, uint32_t begin, uint32_t end, uint32_t cap, const BBox& box, int depth,
              const BBox* cbox_known = nullptr) {
     const uint32_t n = end - begin;
     if (n <= 1) return make_leaf(node, begin, end, box);
@@ -421,10 +466,36 @@ class Builder {
     BBox child_cbox[2];
     bool have_child_cbox = false;
     const Split split = depth < config_.max_sah_depth ? find_split(begin, end, cbox, depth) : Split{};
+    SpatialSplit spatial;
+    if (cap > end && split.axis >= 0 && overlapping(split, box)) {
+      spatial = splitter_.find(prims_ + begin, n, box, cap - end);
+      if (spatial.cost >= split.cost) spatial.axis = -1;
+    }
     if (split.axis >= 0) {
       const float area = box.half_area();
-      const float split_cost = config_.traversal_cost + (area > 0.0f ? split.cost / area : 0.0f);
+      const float cost = spatial.axis >= 0 ? spatial.cost : split.cost;
+      const float split_cost = config_.traversal_cost + (area > 0.0f ? cost / area : 0.0f);
       if (n <= config_.max_leaf && leaf_cost(n) <= split_cost) return make_leaf(node, begin, end, box);
+    }
+    if (spatial.axis >= 0) {
+      std::vector<Prim> right;
+      right.reserve(spatial.right);
+      const uint32_t nl = splitter_.partition(prims_ + begin, n, box, spatial, right);
+      const auto nr = uint32_t(right.size());
+      if (nl > 0 && nr > 0) {
+        // the room left is shared in proportion to the sides' references
+        const uint32_t room = cap - begin - nl - nr;
+        const uint32_t right_begin = begin + nl + uint32_t(uint64_t(room) * nl / (nl + nr));
+        std::copy(right.begin(), right.end(), prims_ + right_begin);
+        return split_node(
+            node, box, {begin, begin + nl, right_begin, range_box(begin, begin + nl, false, depth)},
+            {right_begin, right_begin + nr, cap, range_box(right_begin, right_begin + nr, false, depth)},
+            depth, nullptr);
+      }
+      // every reference landed on one side (whole or clipped): split by object below
+      if (nl == 0) std::copy(right.begin(), right.end(), prims_ + begin);
+    }
+    if (split.axis >= 0) {
       const int axis = split.axis;
       const float lo = cbox.lo[axis], scale = float(bins_) / cbox.extent()[axis];
       const int bins = bins_, last_left = split.bin;
@@ -453,20 +524,38 @@ class Builder {
       right_box = range_box(mid, end, false, depth);
       have_child_cbox = false;
     }
+    // the room after the range is shared in proportion to the sides' references
+    const uint32_t shift = uint32_t(uint64_t(cap - end) * (mid - begin) / n);
+    if (shift != 0) std::copy_backward(prims_ + mid, prims_ + end, prims_ + end + shift);
+    split_node(node, box, {begin, mid, mid + shift, left_box}, {mid + shift, end + shift, cap, right_box},
+               depth, have_child_cbox ? child_cbox : nullptr);
+  }
+
+  struct Child {
+    uint32_t begin, end, cap;
+    BBox box;
+  };
+
+  // Makes `node` an inner node over the two children and builds them (as tasks when large).
+  // child_cbox: the children's centroid bounds when known, else null.
+  void split_node(uint32_t node, const BBox& box, const Child& l, const Child& r, int depth,
+                  const BBox* child_cbox) {
     const uint32_t left = next_node_.fetch_add(2);
     new (nodes_.get() + node) BinaryNode{box, left, 0};
-    if (n >= config_.task_threshold) {
+    const bool known = child_cbox != nullptr;
+    const BBox lc = known ? child_cbox[0] : BBox{}, rc = known ? child_cbox[1] : BBox{};
+    if (l.end - l.begin + r.end - r.begin >= config_.task_threshold) {
       // both halves as tasks: a taskwait waits for every child of the current task, so a right
       // half built in place would, at its first binning taskwait, also wait for (and usually run)
       // the whole left half — which serialised the build
-#pragma omp task firstprivate(left, begin, mid, left_box, depth, child_cbox, have_child_cbox)
-      build(left, begin, mid, left_box, depth + 1, have_child_cbox ? &child_cbox[0] : nullptr);
-#pragma omp task firstprivate(left, mid, end, right_box, depth, child_cbox, have_child_cbox)
-      build(left + 1, mid, end, right_box, depth + 1, have_child_cbox ? &child_cbox[1] : nullptr);
+#pragma omp task firstprivate(left, l, depth, lc, known)
+      build(left, l.begin, l.end, l.cap, l.box, depth + 1, known ? &lc : nullptr);
+#pragma omp task firstprivate(left, r, depth, rc, known)
+      build(left + 1, r.begin, r.end, r.cap, r.box, depth + 1, known ? &rc : nullptr);
 #pragma omp taskwait
     } else {
-      build(left, begin, mid, left_box, depth + 1, have_child_cbox ? &child_cbox[0] : nullptr);
-      build(left + 1, mid, end, right_box, depth + 1, have_child_cbox ? &child_cbox[1] : nullptr);
+      build(left, l.begin, l.end, l.cap, l.box, depth + 1, known ? &lc : nullptr);
+      build(left + 1, r.begin, r.end, r.cap, r.box, depth + 1, known ? &rc : nullptr);
     }
   }
 
@@ -482,7 +571,9 @@ class Builder {
   // uninitialized; the constructor's parallel loop writes every record
   LargeBuffer prims_buffer_, scratch_buffer_;
   Prim* prims_ = nullptr;
-  std::size_t count_ = 0;
+  std::size_t count_ = 0, capacity_ = 0;
+  float root_area_ = 0;
+  SpatialSplitter splitter_;
   Prim* scratch_ = nullptr;
   struct OperatorDelete {
     void operator()(BinaryNode* p) const { ::operator delete(p); }

@@ -28,6 +28,10 @@ struct SahConfig {
   int bins = 32;
   uint32_t task_threshold = 512;  // ranges at least this large are built as OpenMP tasks
   int max_sah_depth = 64;         // deeper than this, object-median splits (bounds the tree depth)
+  // Spatial splits (bvh/spatial_split.h) may add up to this fraction of the triangle count as extra
+  // references (triangles in more than one leaf); 0: object splits only.
+  // benchmarks.md#decision-spatial-splits
+  float split_budget = 0.3f;
 };
 
 struct BinaryBvh {

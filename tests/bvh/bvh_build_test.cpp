@@ -1,7 +1,8 @@
-// Structure of the built trees: every triangle in exactly one leaf, ids increasing inside a leaf
-// (merged leaves included),
-// child boxes inside their parents' slots, the stack bound, and determinism across thread counts;
-// the TriangleSoA the leaves index, filled in parallel.
+// Structure of the built trees: with object splits only, every triangle in exactly one leaf (with
+// spatial splits, in one or more: spatial_split_test.cpp), ids increasing inside a leaf (merged
+// leaves included), child boxes inside their parents' slots, the stack bound, and determinism
+// across thread counts (spatial splits included); the TriangleSoA the leaves index, filled in
+// parallel.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -18,6 +19,12 @@
 
 namespace rayvec {
 namespace {
+
+// The builder's configuration without spatial splits: each triangle in exactly one leaf.
+SahConfig object_splits(SahConfig sah = {}) {
+  sah.split_budget = 0.0f;
+  return sah;
+}
 
 // `order`: the slots' triangles (bin.order, after sort_leaf_slots when leaves were merged).
 template <int N>
@@ -56,7 +63,7 @@ void check_wide(const WideBvh& bvh, const TriangleMesh& mesh, const BinaryBvh& b
 
 TEST(BinnedSahBuilder, EveryTriangleInExactlyOneSortedLeafForEveryWidth) {
   const TriangleMesh mesh = test::random_soup(5000, 0.05f, 11);
-  const BinaryBvh bin = build_binned_sah(mesh);
+  const BinaryBvh bin = build_binned_sah(mesh, object_splits());
   check_wide<4>(WideBvh(bin, 4), mesh, bin);
   check_wide<8>(WideBvh(bin, 8), mesh, bin);
   check_wide<16>(WideBvh(bin, 16), mesh, bin);
@@ -71,7 +78,7 @@ bool check_merged(const TriangleMesh& mesh, uint32_t step, uint32_t merge_slots)
   SahConfig sah;
   sah.leaf_block = step;
   sah.max_leaf = 2 * step;
-  BinaryBvh bin = build_binned_sah(mesh, sah);
+  BinaryBvh bin = build_binned_sah(mesh, object_splits(sah));
   align_leaves(bin, step);
   const WideBvh plain(bin, N);
   const WideBvh merged(bin, N, CollapseRule::lower_sah_cost, merge_slots);
@@ -104,7 +111,7 @@ TEST(WideBvhMerge, SubtreesOfFewSlotsBecomeOneSortedLeaf) {
 TEST(BinnedSahBuilder, CoincidentTrianglesSplitByMedianWithLogDepth) {
   TriangleMesh mesh;  // SAH cannot separate them; the object-median fallback must
   for (int i = 0; i < 4096; ++i) mesh.add_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
-  const BinaryBvh bin = build_binned_sah(mesh);
+  const BinaryBvh bin = build_binned_sah(mesh, object_splits());
   const WideBvh wide(bin, 8);
   check_wide<8>(wide, mesh, bin);
   EXPECT_LE(wide.depth(), 8u);  // 4096 / 8 per leaf = 512 leaves: log8(512) = 3 levels, some slack
@@ -132,9 +139,9 @@ TEST(BinnedSahBuilder, SameTreeWhenTheTopLevelsPartitionInParallel) {
   const TriangleMesh mesh = test::random_soup(70000, 0.01f, 13);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
-  const BinaryBvh one = build_binned_sah(mesh);
+  const BinaryBvh one = build_binned_sah(mesh, object_splits());
   omp_set_num_threads(2);
-  const BinaryBvh two = build_binned_sah(mesh);
+  const BinaryBvh two = build_binned_sah(mesh, object_splits());
   omp_set_num_threads(threads);
   EXPECT_EQ(one.order, two.order);
   const WideBvh a(one, 8), b(two, 8);
@@ -175,7 +182,7 @@ TEST(BinnedSahBuilder, EmptyAndSingleTriangleMeshes) {
   EXPECT_EQ(wide_empty.leaf_count(), 0u);
   TriangleMesh one;
   one.add_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
-  const BinaryBvh bin = build_binned_sah(one);
+  const BinaryBvh bin = build_binned_sah(one, object_splits());
   check_wide<8>(WideBvh(bin, 8), one, bin);
 }
 

@@ -67,6 +67,12 @@ TEST_P(BvhPacket, CameraTilesBitExactOnRandomSoupsWithDuplicates) {
   EXPECT_GT(expect_exact(soup, rays, big), 1000);
 }
 
+// Long triangles referenced in several leaves (spatial splits): packets equal single rays.
+TEST_P(BvhPacket, CameraTilesBitExactWithSpatialSplits) {
+  const std::vector<Ray> rays = camera_tiles({0.1f, 0.3f, 2.5f}, 48, 48, 0.6f);
+  EXPECT_GT(expect_exact(test::long_slivers(3000, 33), rays), 500);
+}
+
 TEST_P(BvhPacket, EveryLaneHitsFromInsideAClosedSphere) {
   const std::vector<Ray> rays = camera_tiles({0.05f, 0.02f, 0.1f}, 32, 32, 1.5f);
   EXPECT_EQ(expect_exact(test::sphere(1.0f, 24, 32), rays), int(rays.size()));

@@ -1,5 +1,6 @@
 // Scenes and rays shared by the BVH tests: random soups, a closed sphere, flat and tiny meshes.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -57,6 +58,25 @@ inline TriangleMesh flat_grid(int n) {
       m.add_triangle(a, b, c);
       m.add_triangle(b, d, c);
     }
+  return m;
+}
+
+// n small random triangles (edges up to 0.05) in [-1, 1]^3, crossed by n / 50 long thin ones
+// (sticks about 2 long, 0.02 wide) and two large floor triangles: the long ones make the boxes of
+// object splits overlap, so the builder's spatial splits reference them in several leaves.
+inline TriangleMesh long_slivers(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> pos(-1.0f, 1.0f);
+  TriangleMesh m = random_soup(n, 0.05f, seed + 1);
+  m.add_triangle({-1.5f, -1.0f, -1.5f}, {1.5f, -1.0f, -1.5f}, {-1.5f, -1.0f, 1.5f});
+  m.add_triangle({1.5f, -1.0f, -1.5f}, {1.5f, -1.0f, 1.5f}, {-1.5f, -1.0f, 1.5f});
+  for (int i = 0; i < n / 50; ++i) {
+    const Vec3f c{pos(rng), pos(rng), pos(rng)};
+    Vec3f u{pos(rng), pos(rng), pos(rng)};
+    u = u * (1.0f / std::max(length(u), 0.1f));
+    const Vec3f w{0.01f * pos(rng), 0.01f * pos(rng), 0.01f * pos(rng)};
+    m.add_triangle(c - u, c + u, c + w);
+  }
   return m;
 }
 

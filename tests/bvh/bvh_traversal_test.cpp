@@ -80,6 +80,20 @@ TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
   expect_same(test::random_soup(500, 0.6f, 3), test::random_rays(1000, 1.2f, 4));
 }
 
+// Spatial splits (bvh/spatial_split.h) reference the long triangles in several leaves, each leaf's
+// box bounding only their part in it: the hits stay brute force's, ties and any-hit included.
+TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceWithSpatialSplits) {
+  const TriangleMesh mesh = test::long_slivers(3000, 31);
+  const BvhAccelerator bvh(mesh, config(), options());
+  std::size_t references = 0;
+  for (std::size_t s = 0; s < bvh.triangles().size(); ++s) references += bvh.triangles().id(s) >= 0 ? 1 : 0;
+  EXPECT_GT(references, mesh.size() + mesh.size() / 20) << "few triangles in two leaves: nothing new tested";
+  std::vector<Ray> rays = test::random_rays(2000, 1.5f, 32);
+  for (std::size_t i = 0; i < rays.size(); i += 4)
+    rays[i].dir = Vec3f{0.01f, -1.0f, 0.02f};  // onto the floor
+  expect_same(mesh, rays);
+}
+
 // The traversals' two leaf calls — through the kernel table, and the float kernel called directly
 // (AVX2 and AVX-512) — both equal brute force, with tmin < 0, = 0 and > 0 (the direct `mt` call
 // picks the kernel's tmin = 0 form itself). With the `mt` intersector on AVX2 and AVX-512 the
