@@ -197,18 +197,24 @@ int run(const Options& o) {
   const Mismatches mismatches = embree ? count_mismatches(run, rival_run) : Mismatches{};
   const FmaRates fma = measure_fma_rates();
 
+  // triangle references in the leaves (padding slots aside): above 1 a triangle with spatial splits
+  std::size_t references = 0;
+  for (std::size_t slot = 0; slot < bvh->triangles().size(); ++slot)
+    references += bvh->triangles().id(slot) >= 0 ? 1 : 0;
+  const double refs_per_tri = mesh.size() ? double(references) / double(mesh.size()) : 0.0;
+  const float split_budget = bvh_options.sah.split_budget;
   if (o.json) {
     std::printf(
         "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
         "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,\"merge_steps\":%"
-        "d,"
+        "d,\"split_budget\":%.3f,\"references_per_tri\":%.4f,"
         "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
         "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
         json_string(o.model).c_str(), mesh.size(), width, height, json_string(cpu_features().brand).c_str(),
         json_string(isa_name(config.isa)).c_str(), json_string(intersector_name(config.intersector)).c_str(),
         threads, bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
-        bvh->traversal().direct_leaf ? "true" : "false", o.merge_steps, o.builds, build_s,
-        json_array(build_runs).c_str(), bytes_per_tri, fma.avx2, fma.avx512);
+        bvh->traversal().direct_leaf ? "true" : "false", o.merge_steps, double(split_budget), refs_per_tri,
+        o.builds, build_s, json_array(build_runs).c_str(), bytes_per_tri, fma.avx2, fma.avx512);
     print_sets_json(run);
     if (o.vs_embree) {
       std::printf(",\"embree\":{\"build_s\":%.6f,\"build_runs_s\":%s,\"max_isa\":\"%s\",", embree_build_s,
@@ -236,11 +242,14 @@ int run(const Options& o) {
                   ? " (512-bit operations at half rate here: 16-wide kernels keep no edge in lanes a cycle)"
                   : "");
   std::printf(
-      "bvh: %d-wide, %u nodes, %u leaves (merged up to %d kernel steps), depth %u, leaf kernel %s; build "
-      "%.4f s; %.1f bytes/triangle (nodes %.1f + triangles %.1f)\n",
-      bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), o.merge_steps,
-      bvh->tree().depth(), bvh->traversal().direct_leaf ? "called directly" : "through the kernel table",
-      build_s, bytes_per_tri, double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
+      "bvh: %d-wide, %u nodes, %u leaves (merged up to %d kernel steps), %.3f references per triangle "
+      "(spatial-split budget %.2f), depth %u, leaf kernel %s; build %.4f s; %.1f bytes/triangle (nodes %.1f "
+      "+ "
+      "triangles %.1f)\n",
+      bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), o.merge_steps, refs_per_tri,
+      double(split_budget), bvh->tree().depth(),
+      bvh->traversal().direct_leaf ? "called directly" : "through the kernel table", build_s, bytes_per_tri,
+      double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
   if (o.vs_embree)
     std::printf(
         "embree: max_isa=%s, RTC_BUILD_QUALITY_HIGH build %.4f s (rayvec/embree build time "
