@@ -51,14 +51,16 @@ float SpatialSplitter::plane_at(const BBox& box, int axis, int k) const {
 }
 
 // Bins of r's low and high ends along `axis`: bin k spans [plane_at(k), plane_at(k + 1)), the
-// last bin up to the box's end. One bin (first == last) for a reference that cannot be clipped
-// (a non-finite box: a triangle with a non-finite vertex is never hit and never split).
+// last bin up to the box's end. One bin (first == last) for a reference that is not to be clipped:
+// a non-finite box (an infinite vertex, or no finite one); such a triangle is never hit.
 void SpatialSplitter::bin_span(const BuildPrim& r, const BBox& box, int axis, bool splittable, int& first,
                                int& last) const {
   const float scale = float(bins_) / (box.hi[axis] - box.lo[axis]);
-  auto bin = [&](float x) {
-    const float f = (x - box.lo[axis]) * scale;
-    return f > 0.0f ? std::min(int(f), bins_ - 1) : 0;  // NaN → 0
+  const float last_bin = float(bins_ - 1);
+  auto bin = [&](float x) {  // clamped before the conversion: NaN → 0, ±inf → the end bins
+    float f = (x - box.lo[axis]) * scale;
+    f = f > 0.0f ? f : 0.0f;
+    return int(f < last_bin ? f : last_bin);
   };
   first = bin(r.lo[axis]);
   last = splittable ? std::max(first, bin(r.hi[axis])) : first;

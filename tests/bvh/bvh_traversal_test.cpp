@@ -83,7 +83,10 @@ TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
 // Spatial splits (bvh/spatial_split.h) reference the long triangles in several leaves, each leaf's
 // box bounding only their part in it: the hits stay brute force's, ties and any-hit included.
 TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceWithSpatialSplits) {
-  const TriangleMesh mesh = test::long_slivers(3000, 31);
+  TriangleMesh mesh = test::long_slivers(3000, 31);
+  const float nan = std::nanf(""), inf = kInf;  // never hit; binned and partitioned all the same
+  mesh.add_triangle({nan, nan, nan}, {nan, nan, nan}, {nan, nan, nan});
+  mesh.add_triangle({-0.5f, 0.2f, 0.0f}, {nan, 0.1f, 0.0f}, {0.9f, 0.5f, -0.3f});
   const BvhAccelerator bvh(mesh, config(), options());
   std::size_t references = 0;
   for (std::size_t s = 0; s < bvh.triangles().size(); ++s) references += bvh.triangles().id(s) >= 0 ? 1 : 0;
@@ -91,6 +94,10 @@ TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceWithSpatialSplits) {
   std::vector<Ray> rays = test::random_rays(2000, 1.5f, 32);
   for (std::size_t i = 0; i < rays.size(); i += 4)
     rays[i].dir = Vec3f{0.01f, -1.0f, 0.02f};  // onto the floor
+  expect_same(mesh, rays);
+  // an infinite vertex makes the root's box infinite: no spatial split then, the same hits
+  mesh.add_triangle({-0.5f, 0.0f, 0.0f}, {inf, 0.1f, 0.0f}, {0.0f, 0.5f, 0.0f});
+  mesh.add_triangle({-inf, -inf, -inf}, {inf, inf, inf}, {0.0f, 0.0f, 0.0f});
   expect_same(mesh, rays);
 }
 
