@@ -29,7 +29,8 @@ struct SahConfig {
   uint32_t task_threshold = 512;  // ranges at least this large are built as OpenMP tasks
   int max_sah_depth = 64;         // deeper than this, object-median splits (bounds the tree depth)
   // Spatial splits (bvh/spatial_split.h) may add up to this fraction of the triangle count as extra
-  // references (triangles in more than one leaf); 0: object splits only.
+  // references (triangles in more than one leaf); 0: object splits only. None are tried when the
+  // mesh's box is infinite (a vertex at infinity).
   // benchmarks.md#decision-spatial-splits
   float split_budget = 0.3f;
 };
