@@ -39,7 +39,8 @@ struct BinaryBvh {
   // nodes[0] is the root (absent for an empty mesh); children of an inner node are adjacent.
   std::vector<BinaryNode> nodes;
   // Triangle ids in leaf order: leaf [first, first + count) holds order[first .. first + count);
-  // inside each leaf the ids increase (the kernels' tie rule needs it).
+  // inside each leaf the ids increase (the kernels' tie rule needs it). With spatial splits a
+  // triangle may be in more than one leaf (SahConfig::split_budget); otherwise in exactly one.
   std::vector<uint32_t> order;
 };
 

@@ -33,13 +33,15 @@ class SpatialSplitter {
 
   // Applies `split` (from find with the same refs and box): writes the left side's references to
   // refs[0, returned count) and the right side's to `right`. A straddling reference is clipped to
-  // each side where its triangle has a part there; the others keep their box.
+  // each side where its triangle has a part there; the others keep their box. Each side gets at
+  // most the references find() counted for it (both classify a reference by the same bins).
   uint32_t partition(BuildPrim* refs, uint32_t n, const BBox& box, const SpatialSplit& split,
                      std::vector<BuildPrim>& right) const;
 
   // The parts of r's triangle on each side of the plane x_axis = at, each bounded within r's box;
   // false for a side with no part (its box is then empty). Conservative: computed crossing points
-  // are widened by a few ulps, so a box never misses a point of the triangle's part.
+  // are widened by 2^-20 of the edge's coordinates (some 16 ulps), so a box never misses a point of
+  // the triangle's part.
   void clip(const BuildPrim& r, int axis, float at, BuildPrim& left, BuildPrim& right, bool& has_left,
             bool& has_right) const;
 
