@@ -34,8 +34,8 @@ struct Options {
   int max_leaf = 0, leaf_block = 0;  // 0: the builder's defaults
   int direct_leaf = -1;              // -1: default_direct_leaf
   int merge_steps = BvhOptions{}.merge_steps;
-  int builds = 3;            // builds timed; the median is reported
-  double split_budget = -1;  // < 0: the default
+  int builds = 3;  // builds timed; the median is reported
+  double split_budget = SahConfig{}.split_budget;
 };
 
 std::string json_array(const std::vector<double>& v) {
@@ -145,10 +145,8 @@ int run(const Options& o) {
   if (o.merge_steps < 0 || o.merge_steps > int(kMaxLeafTriangles))
     throw InputError("--merge-steps: must be 0 to " + std::to_string(kMaxLeafTriangles));
   bvh_options.merge_steps = o.merge_steps;
-  if (o.split_budget >= 0) {
-    if (!(o.split_budget <= 1)) throw InputError("--split-budget: must be 0 to 1");
-    bvh_options.sah.split_budget = float(o.split_budget);
-  }
+  if (!(o.split_budget >= 0 && o.split_budget <= 1)) throw InputError("--split-budget: must be 0 to 1");
+  bvh_options.sah.split_budget = float(o.split_budget);
   if (o.leaf_block != 0) {
     if (o.leaf_block < 1 || o.leaf_block > 32) throw InputError("--leaf-block: must be 1 to 32");
     bvh_options.sah.leaf_block = uint32_t(o.leaf_block);
@@ -302,7 +300,7 @@ void register_bench_rays_command(Command& bench) {
               "slots) becomes one leaf instead of a node of its own; 0 = never (default 3)")
       .option("--split-budget", o.split_budget,
               "tuning: spatial splits may add up to this fraction of the triangles as extra leaf "
-              "references (0 = none; default: the builder's)")
+              "references (0 = none; default 0.3)")
       .option("--direct-leaf", o.direct_leaf,
               "tuning: closest-hit traversal calls the mt leaf kernel directly (1) or through the "
               "kernel table (0); -1 = default (directly on AVX2 and on Intel's AVX-512)");

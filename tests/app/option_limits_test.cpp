@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "bvh/bvh_scenes.h"
 #include "test_support.h"
 
 namespace rayvec {
@@ -55,6 +56,35 @@ TEST(OptionLimits, BenchRaysMergeStepsAreBounded) {
   const auto r = test::run_cli(bench + " --merge-steps 0 --json");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"merge_steps\":0"), std::string::npos) << r.out;
+}
+
+// --split-budget is a fraction of the triangles in [0, 1]; in range it is run and reported with the
+// references per triangle it gave: 1 without splits, more on a mesh of long slivers.
+TEST(OptionLimits, BenchRaysSplitBudgetIsAFractionAndReported) {
+  const std::string dir = test::temp_dir("option_split_budget");
+  const TriangleMesh mesh = test::long_slivers(3000, 7);
+  std::string obj;
+  for (const Vec3f& p : mesh.positions)
+    obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+  for (const auto& t : mesh.triangles)
+    obj += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) +
+           "\n";
+  test::write_file(dir + "/m.obj", obj);
+  const std::string bench = "bench rays " + dir + "/m.obj --size 4x4 --repeats 1 --builds 1 --json";
+  for (const char* bad : {" --split-budget 1.5", " --split-budget -0.5", " --split-budget nan"}) {
+    const auto r = test::run_cli(bench + bad);
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
+  }
+  const auto none = test::run_cli(bench + " --split-budget 0");
+  EXPECT_EQ(none.status, 0) << none.err;
+  EXPECT_NE(none.out.find("\"split_budget\":0.000,\"references_per_tri\":1.0000"), std::string::npos)
+      << none.out;
+  const auto split = test::run_cli(bench);
+  EXPECT_EQ(split.status, 0) << split.err;
+  const std::string key = "\"split_budget\":0.300,\"references_per_tri\":";
+  const std::size_t at = split.out.find(key);
+  ASSERT_NE(at, std::string::npos) << split.out;
+  EXPECT_GT(std::stod(split.out.substr(at + key.size())), 1.05) << split.out;
 }
 
 }  // namespace
