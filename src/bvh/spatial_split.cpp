@@ -25,8 +25,6 @@ struct Bounds {
       hi[a] = std::max(hi[a], h[a]);
     }
   }
-  void grow(const BuildPrim& p) { grow(p.lo, p.hi); }
-  void grow(const Bounds& b) { grow(b.lo, b.hi); }
   bool empty() const { return !(lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2]); }
   float half_area() const {
     if (empty()) return 0.0f;
