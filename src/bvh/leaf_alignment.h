@@ -4,6 +4,8 @@
 // left of the current step starts there, sharing the step with the leaf before it; otherwise it
 // starts on the next multiple of `step`. The gaps become padding slots (TriangleSoA::kPaddingSlot:
 // zero area, id −1) that no binary leaf covers (a merged leaf of the wide BVH may: wide_bvh.h).
+// Of the two children of each inner node, the one laid out first is the one that leaves the fewest
+// padding slots in the whole tree (benchmarks.md#decision-leaf-alignment).
 #pragma once
 #include <cstdint>
 
@@ -13,7 +15,8 @@ namespace rayvec {
 
 // Rewrites tree.order (inserting kPaddingSlot entries) and every leaf's `first` so each leaf of
 // n triangles lies in ceil(n / step) aligned groups of `step` slots (a power of two; 1 leaves the
-// tree unchanged). Leaves keep their triangles and their order.
+// tree unchanged). Leaves keep their triangles, in their order; every subtree's leaves stay
+// contiguous (with padding between them), but two sibling subtrees may trade places.
 void align_leaves(BinaryBvh& tree, uint32_t step);
 
 }  // namespace rayvec
