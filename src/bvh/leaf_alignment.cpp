@@ -1,7 +1,7 @@
 #include "bvh/leaf_alignment.h"
 
 #include <algorithm>
-#include <array>
+#include <bit>
 #include <utility>
 #include <vector>
 
@@ -11,34 +11,33 @@ namespace rayvec {
 namespace {
 
 // Kernel steps covering `count` slots from `first`: the kernels step through aligned groups of
-// `step` slots, masking the lanes outside the leaf.
+// `step` slots (a power of two), masking the lanes outside the leaf.
 uint32_t steps_from(uint32_t first, uint32_t count, uint32_t step) {
-  return (first % step + count + step - 1) / step;
+  return ((first & (step - 1)) + count + step - 1) >> std::countr_zero(step);
 }
 
 // The padding a leaf of `count` slots needs when it would start at `offset` (mod step): none if it
 // fits in as many steps from there as from a step's start, else up to the next step.
 uint32_t leaf_padding(uint32_t offset, uint32_t count, uint32_t step) {
-  return steps_from(offset, count, step) > steps_from(0, count, step) ? (step - offset) % step : 0;
+  return steps_from(offset, count, step) > steps_from(0, count, step) ? (step - offset) & (step - 1) : 0;
 }
 
 constexpr uint32_t kMaxReorderStep = 64;  // a node's choices are one bit per entry offset
 
 // What laying out a subtree costs, for every offset (mod step) at which its first slot could start:
-// the padding slots inside it and the offset after its last slot.
-struct SubtreeLayout {
-  std::array<uint64_t, kMaxReorderStep> padding;
-  std::array<uint8_t, kMaxReorderStep> exit;
-};
-
-SubtreeLayout leaf_layout(uint32_t count, uint32_t step) {
-  SubtreeLayout s;
-  for (uint32_t o = 0; o < step; ++o) {
-    s.padding[o] = leaf_padding(o, count, step);
-    s.exit[o] = uint8_t((o + s.padding[o] + count) % step);
+// the padding slots inside it and the offset after its last slot. A stack of them, `step` entries
+// each, flat (one pair of vectors for the whole walk, no copies of whole layouts).
+struct LayoutStack {
+  std::vector<uint32_t> padding;
+  std::vector<uint8_t> exit;
+  void push_leaf(uint32_t count, uint32_t step) {
+    for (uint32_t o = 0; o < step; ++o) {
+      const uint32_t pad = leaf_padding(o, count, step);
+      padding.push_back(pad);
+      exit.push_back(uint8_t((o + pad + count) & (step - 1)));
+    }
   }
-  return s;
-}
+};
 
 // Which child of each inner binary node is laid out first, chosen per entry offset (bit o set: the
 // second child first when the node starts at offset o) so that the whole tree needs the fewest
@@ -49,13 +48,15 @@ SubtreeLayout leaf_layout(uint32_t count, uint32_t step) {
 std::vector<uint64_t> second_child_first(const BinaryBvh& tree, uint32_t step) {
   std::vector<uint64_t> swap(tree.nodes.size(), 0);
   std::vector<std::pair<uint32_t, bool>> stack{{0, false}};
-  std::vector<SubtreeLayout> done;  // layouts of finished subtrees whose parent is still open
+  LayoutStack done;  // layouts of finished subtrees whose parent is still open
+  uint32_t pad[kMaxReorderStep];
+  uint8_t out[kMaxReorderStep];
   while (!stack.empty()) {
     const auto [k, children_done] = stack.back();
     stack.pop_back();
     const BinaryNode& n = tree.nodes[k];
     if (n.leaf()) {
-      done.push_back(leaf_layout(n.count, step));
+      done.push_leaf(n.count, step);
       continue;
     }
     if (!children_done) {
@@ -64,22 +65,21 @@ std::vector<uint64_t> second_child_first(const BinaryBvh& tree, uint32_t step) {
       stack.push_back({n.first, false});
       continue;
     }
-    const SubtreeLayout b = done.back();  // second child
-    done.pop_back();
-    const SubtreeLayout a = done.back();  // first child
-    SubtreeLayout& s = done.back();
+    const std::size_t b = done.padding.size() - step, a = b - step;  // second child, first child
+    const uint32_t* pa = &done.padding[a];
+    const uint32_t* pb = &done.padding[b];
+    const uint8_t* ea = &done.exit[a];
+    const uint8_t* eb = &done.exit[b];
     for (uint32_t o = 0; o < step; ++o) {
-      const uint64_t ab = a.padding[o] + b.padding[a.exit[o]];
-      const uint64_t ba = b.padding[o] + a.padding[b.exit[o]];
-      if (ba < ab) {
-        swap[k] |= uint64_t(1) << o;
-        s.padding[o] = ba;
-        s.exit[o] = a.exit[b.exit[o]];
-      } else {
-        s.padding[o] = ab;
-        s.exit[o] = b.exit[a.exit[o]];
-      }
+      const uint32_t ab = pa[o] + pb[ea[o]], ba = pb[o] + pa[eb[o]];
+      if (ba < ab) swap[k] |= uint64_t(1) << o;
+      pad[o] = ba < ab ? ba : ab;
+      out[o] = ba < ab ? ea[eb[o]] : eb[ea[o]];
     }
+    std::copy(pad, pad + step, done.padding.begin() + std::ptrdiff_t(a));
+    std::copy(out, out + step, done.exit.begin() + std::ptrdiff_t(a));
+    done.padding.resize(b);
+    done.exit.resize(b);
   }
   return swap;
 }
@@ -97,7 +97,7 @@ void align_leaves(BinaryBvh& tree, uint32_t step) {
     BinaryNode& n = tree.nodes[stack.back()];
     const uint32_t k = stack.back();
     stack.pop_back();
-    const auto offset = uint32_t(order.size() % step);
+    const auto offset = uint32_t(order.size() & (step - 1));
     if (!n.leaf()) {
       const bool second_first = (swap[k] >> offset) & 1;
       stack.push_back(second_first ? n.first : n.first + 1);
