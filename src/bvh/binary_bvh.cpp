@@ -29,12 +29,15 @@ constexpr int kBinningChunks = 4;
 constexpr std::size_t kParallelBuild = 1024;
 // Spatial splits (SahConfig::split_budget): bins per axis, and how much the children of an object
 // split must overlap for one to be tried: their common box's area relative to the root's (Stich et
-// al.'s α, which keeps splits out of the tree's small bottom nodes) and to the node's own (which
+// al.'s α, which keeps splits out of the tree's small bottom nodes), to the node's own (which
 // keeps the search off nodes whose object split is already nearly disjoint, as on a mesh of small,
-// even triangles; benchmarks.md#decision-spatial-splits)
+// even triangles), and its thickness along the split axis relative to the node's extent there (a
+// thin slab is the overlap of a curved surface cut across, made by triangles that barely straddle
+// the cut: large in area, yet no spatial split pays for it; benchmarks.md#decision-spatial-splits)
 constexpr int kSpatialBins = 16;
 constexpr float kSplitOverlap = 1e-5f;
 constexpr float kSplitNodeOverlap = 0.3f;
+constexpr float kSplitAxisOverlap = 0.05f;
 
 using Prim = BuildPrim;
 
@@ -436,7 +439,7 @@ class Builder {
   }
 
   // Whether the children of an object split overlap enough for a spatial split to be tried
-  // (kSplitOverlap, kSplitNodeOverlap).
+  // (kSplitOverlap, kSplitNodeOverlap, kSplitAxisOverlap).
   bool overlapping(const Split& split, const BBox& box) const {
     BBox common;
     for (int a = 0; a < 3; ++a) {
@@ -444,7 +447,10 @@ class Builder {
       common.hi[a] = std::min(split.left.hi[a], split.right.hi[a]);
     }
     const float area = common.half_area();
-    return area > kSplitOverlap * root_area_ && area > kSplitNodeOverlap * box.half_area();
+    const int a = split.axis;
+    const float thickness = common.hi[a] - common.lo[a];
+    return area > kSplitOverlap * root_area_ && area > kSplitNodeOverlap * box.half_area() &&
+           thickness > kSplitAxisOverlap * (box.hi[a] - box.lo[a]);
   }
 
   // Builds the subtree of the references [begin, end) into `node`; [end, cap) is room the subtree
