@@ -532,7 +532,12 @@ class Builder {
     }
     // the room after the range is shared in proportion to the sides' references
     const uint32_t shift = uint32_t(uint64_t(cap - end) * (mid - begin) / n);
-    if (shift != 0) std::copy_backward(prims_ + mid, prims_ + end, prims_ + end + shift);
+    // the right side moves up by `shift`: only its first min(shift, size) references need to move
+    // (to its new end), since the order inside a range does not matter
+    if (shift != 0) {
+      const uint32_t moved = std::min(shift, end - mid);
+      std::copy(prims_ + mid, prims_ + mid + moved, prims_ + end + shift - moved);
+    }
     split_node(node, box, {begin, mid, mid + shift, left_box}, {mid + shift, end + shift, cap, right_box},
                depth, have_child_cbox ? child_cbox : nullptr);
   }
