@@ -94,9 +94,9 @@ void align_leaves(BinaryBvh& tree, uint32_t step) {
   order.reserve(tree.order.size() + tree.order.size() / 2);
   std::vector<uint32_t> stack{0};  // depth first, each node's children in the chosen order
   while (!stack.empty()) {
-    BinaryNode& n = tree.nodes[stack.back()];
     const uint32_t k = stack.back();
     stack.pop_back();
+    BinaryNode& n = tree.nodes[k];
     const auto offset = uint32_t(order.size() & (step - 1));
     if (!n.leaf()) {
       const bool second_first = (swap[k] >> offset) & 1;
