@@ -57,18 +57,39 @@ void check_coordinates(std::string_view rest, int needed, const char* kind, cons
   }
 }
 
+// Whether a token is a plain decimal: an optional sign, digits with at most one decimal point, and
+// at least one digit (no exponent, no trailing characters).
+bool plain_decimal(std::string_view token) {
+  if (!token.empty() && (token.front() == '+' || token.front() == '-')) token.remove_prefix(1);
+  int digits = 0, points = 0;
+  for (const char c : token) {
+    if (c >= '0' && c <= '9')
+      ++digits;
+    else if (c == '.' && ++points == 1)
+      continue;
+    else
+      return false;
+  }
+  return digits > 0;
+}
+
 // `vw vid joint weight joint weight ...` (tinyobjloader's skin-weight extension, unused by
 // rayvec): tinyobjloader converts each joint id to int without a range check, which is undefined
-// behaviour for NaN or ids of 2^31 and more (found by fuzz_obj). Negative ids it rejects itself.
+// behaviour for NaN or ids of 2^31 and more (found by fuzz_obj). Its own number parser makes NaN of
+// some forms that strtod reads as finite (a zero mantissa times an exponent of 10^1000000), so a
+// joint id must be a plain decimal, whose value both read alike. Negative ids it rejects itself.
 void check_skin_weights(std::string_view rest, const std::string& path, std::size_t line_no) {
   next_token(rest);  // vertex id
   for (int k = 0;; ++k) {
     const std::string_view token = next_token(rest);
     if (token.empty()) return;
     if (k % 2 != 0) continue;  // weights are floats, any value
-    const double joint = std::strtod(std::string(token).c_str(), nullptr);
+    const double joint = plain_decimal(token) ? std::strtod(std::string(token).c_str(), nullptr) : NAN;
     if (!(joint < 2147483648.0))
-      throw InputError(path, line_no, "`vw` joint id '" + printable(token) + "' is not a number below 2^31");
+      throw InputError(path, line_no,
+                       "`vw` joint id '" + printable(token) +
+                           "' is not a plain decimal number below 2^31 (digits, an optional sign "
+                           "and decimal point)");
   }
 }
 

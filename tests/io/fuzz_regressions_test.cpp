@@ -28,7 +28,19 @@ TEST(FuzzRegressions, SkinWeightJointIdBeyondIntIsRejected) {
   // `vw 0 2222222224`: tinyobjloader converted the joint id to int (UBSan: float-cast-overflow).
   const std::string path = kFuzz + "obj_vw_joint_overflow.obj";
   EXPECT_EQ(input_error_of([&] { load_obj(path); }),
-            path + ":1: `vw` joint id '2222222224' is not a number below 2^31");
+            path +
+                ":1: `vw` joint id '2222222224' is not a plain decimal number below 2^31 (digits, "
+                "an optional sign and decimal point)");
+}
+
+TEST(FuzzRegressions, SkinWeightJointIdThatTinyobjloaderReadsAsNanIsRejected) {
+  // `vw 0 0e0000001000000ad1`: strtod reads 0, but tinyobjloader's parser multiplies the zero
+  // mantissa by 10^1000000 (NaN) and converted that to int (UBSan: float-cast-overflow).
+  const std::string path = kFuzz + "obj_vw_joint_nan.obj";
+  EXPECT_EQ(input_error_of([&] { load_obj(path); }),
+            path +
+                ":8: `vw` joint id '0e0000001000000ad1' is not a plain decimal number below 2^31 (digits, "
+                "an optional sign and decimal point)");
 }
 
 TEST(FuzzRegressions, JsonNumberOverflowIsAnInputError) {
