@@ -93,6 +93,28 @@ void check_skin_weights(std::string_view rest, const std::string& path, std::siz
   }
 }
 
+// tinyobjloader's number parser reads an exponent into an int whose overflow check lets
+// 2147483648 and 2147483649 through (signed overflow: undefined behaviour). No file needs an
+// exponent of ten digits, so every number-like token of the lines it parses numbers from (v, vn,
+// vt, vw, t) must have fewer, counted without leading zeros.
+void check_exponents(std::string_view rest, const std::string& path, std::size_t line_no) {
+  for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
+    std::size_t i = 0;
+    if (token[i] == '+' || token[i] == '-') ++i;
+    const std::size_t mantissa = i;
+    while (i < token.size() && ((token[i] >= '0' && token[i] <= '9') || token[i] == '.')) ++i;
+    if (i == mantissa || i >= token.size() || (token[i] != 'e' && token[i] != 'E')) continue;
+    ++i;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+    while (i < token.size() && token[i] == '0') ++i;
+    std::size_t digits = 0;
+    while (i + digits < token.size() && token[i + digits] >= '0' && token[i + digits] <= '9') ++digits;
+    if (digits >= 10)
+      throw InputError(path, line_no,
+                       "number '" + printable(token) + "' has an exponent of 10 digits or more (at most 9)");
+  }
+}
+
 struct Counts {
   long v = 0, vt = 0, vn = 0;
 };
@@ -154,6 +176,8 @@ void check_obj_text(std::string_view text, const std::string& path) {
     std::string_view rest = next_text_line(text, pos);
     ++line_no;
     const std::string_view keyword = next_token(rest);
+    if (keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "vw" || keyword == "t")
+      check_exponents(rest, path, line_no);
     if (keyword == "v") {
       check_coordinates(rest, 3, "v", path, line_no);
       ++seen.v;

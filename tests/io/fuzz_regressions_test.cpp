@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "io/input_error.h"
 #include "scene/obj_loader.h"
@@ -41,6 +42,28 @@ TEST(FuzzRegressions, SkinWeightJointIdThatTinyobjloaderReadsAsNanIsRejected) {
             path +
                 ":8: `vw` joint id '0e0000001000000ad1' is not a plain decimal number below 2^31 (digits, "
                 "an optional sign and decimal point)");
+}
+
+TEST(FuzzRegressions, ExponentsOfTenDigitsAreRejectedOnEveryLineTinyobjloaderParses) {
+  // tinyobjloader's exponent check lets 2147483648 and 2147483649 overflow its int (UBSan:
+  // signed-integer-overflow); found while fixing the `vw` NaN joint id. Each line sends the file
+  // down tinyobjloader's path (a `vw` or `t` line, or a polygon of 5 corners).
+  const std::string dir = test::temp_dir("fuzz_exponent");
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 2 0\nf 1 2 3 4 5\n";
+  const std::pair<const char*, const char*> cases[] = {{"v 0e2147483649 0 0\n", "0e2147483649"},
+                                                       {"vn 0 0 1E+0002147483648\n", "1E+0002147483648"},
+                                                       {"vt 0 -.5e-2147483649x\n", "-.5e-2147483649x"},
+                                                       {"vw 0 1 0e2147483649\n", "0e2147483649"},
+                                                       {"t crease 0/1/0 1.0e2147483649\n", "1.0e2147483649"},
+                                                       {"v 0 0 0 1 0e9999999999 1\n", "0e9999999999"}};
+  for (const auto& [line, token] : cases) {
+    test::write_file(dir + "/m.obj", tri + line);
+    EXPECT_EQ(input_error_of([&] { load_obj(dir + "/m.obj"); }),
+              dir + "/m.obj:7: number '" + token + "' has an exponent of 10 digits or more (at most 9)")
+        << line;
+  }
+  test::write_file(dir + "/m.obj", tri + "v 0 0 1e000000000003\nvt 0.5 1e-999999999\n");
+  EXPECT_NO_THROW(load_obj(dir + "/m.obj"));  // nine digits, leading zeros not counted
 }
 
 TEST(FuzzRegressions, JsonNumberOverflowIsAnInputError) {
