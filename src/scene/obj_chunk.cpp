@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "geometry/coordinate_range.h"
+#include "scene/obj_scan.h"
 
 namespace rayvec {
 namespace {
@@ -24,7 +25,7 @@ bool is_digit(char c) { return static_cast<unsigned>(c - '0') < 10u; }
 // Clinger's fast path (Clinger 1990): a decimal of at most 15 digits and no exponent is m / 10^k
 // with m and 10^k exact doubles, so one IEEE division rounds it correctly, the value fast_float
 // gives. Returns the end of the number, or nullptr when the text needs fast_float.
-const char* plain_decimal(const char* p, const char* end, double& value) {
+const char* short_decimal(const char* p, const char* end, double& value) {
   static constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                       1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
   const bool negative = p != end && *p == '-';
@@ -75,7 +76,7 @@ class Cursor {
   }
 
   // A number tinyobjloader reads in full and obj_scan.cpp accepts: optional sign, digits with an
-  // optional point, an optional exponent, finite as a float.
+  // optional point, an optional exponent of at most kMaxExponentDigits digits, finite as a float.
   bool number(float& out) {
     const char* start = p_;
     if (start != end_ && *start == '+') {
@@ -83,11 +84,14 @@ class Cursor {
       if (start == end_ || !(is_digit(*start) || *start == '.')) return false;
     }
     double value = 0;
-    if (const char* end = plain_decimal(start, end_, value)) {
+    if (const char* end = short_decimal(start, end_, value)) {
       p_ = end;
     } else {
       const fast_float::from_chars_result r = fast_float::from_chars(start, end_, value);
       if (r.ec != std::errc()) return false;
+      // an exponent obj_scan refuses: the reference path gives that error
+      if (exponent_digits(std::string_view(start, std::size_t(r.ptr - start))) > kMaxExponentDigits)
+        return false;
       p_ = r.ptr;
     }
     out = static_cast<float>(value);
@@ -123,6 +127,15 @@ struct Corner {
   bool any_relative() const { return relative[0] || relative[1] || relative[2]; }
 };
 
+// Whether every token left on the line has an exponent obj_scan accepts (kMaxExponentDigits);
+// moves to the line end. obj_scan checks every token of the lines tinyobjloader reads numbers
+// from, read here or not: a line it refuses is left to the reference path and its error.
+bool exponents_accepted(Cursor& in) {
+  for (in.skip_blanks(); !in.at_line_end(); in.skip_blanks())
+    if (exponent_digits(in.token()) > kMaxExponentDigits) return false;
+  return true;
+}
+
 class ChunkParser {
  public:
   explicit ChunkParser(ObjChunk& chunk) : c_(chunk) {}
@@ -145,7 +158,8 @@ class ChunkParser {
         return false;
       (kind == kV ? c_.positions : c_.normals).push_back({x[0], x[1], x[2]});
     }
-    return in.next_line();
+    // the tokens after the coordinates (`v x y z w`, colors) are not read, but obj_scan checks them
+    return exponents_accepted(in) && in.next_line();
   }
 
   bool face_line(Cursor& in) {
@@ -290,8 +304,10 @@ void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
       if (in.at_line_end())
         chunk.events.push_back({ObjEvent::empty_group, chunk.lines, chunk.triangles.size(), {}});
       ok = in.next_line();
+    } else if (key == "t") {
+      ok = exponents_accepted(in) && in.next_line();  // tags: their numbers are not used
     } else {
-      ok = in.next_line();  // blank lines, comments, o, s, t and what tinyobjloader ignores
+      ok = in.next_line();  // blank lines, comments, o, s and what tinyobjloader ignores
     }
   }
   chunk.ok = ok;

@@ -1,5 +1,6 @@
 #include "scene/obj_scan.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <string>
@@ -59,7 +60,7 @@ void check_coordinates(std::string_view rest, int needed, const char* kind, cons
 
 // Whether a token is a plain decimal: an optional sign, digits with at most one decimal point, and
 // at least one digit (no exponent, no trailing characters).
-bool plain_decimal(std::string_view token) {
+bool is_plain_decimal(std::string_view token) {
   if (!token.empty() && (token.front() == '+' || token.front() == '-')) token.remove_prefix(1);
   int digits = 0, points = 0;
   for (const char c : token) {
@@ -84,7 +85,7 @@ void check_skin_weights(std::string_view rest, const std::string& path, std::siz
     const std::string_view token = next_token(rest);
     if (token.empty()) return;
     if (k % 2 != 0) continue;  // weights are floats, any value
-    const double joint = plain_decimal(token) ? std::strtod(std::string(token).c_str(), nullptr) : NAN;
+    const double joint = is_plain_decimal(token) ? std::strtod(std::string(token).c_str(), nullptr) : NAN;
     if (!(joint < 2147483648.0))
       throw InputError(path, line_no,
                        "`vw` joint id '" + printable(token) +
@@ -93,26 +94,15 @@ void check_skin_weights(std::string_view rest, const std::string& path, std::siz
   }
 }
 
-// tinyobjloader's number parser reads an exponent into an int whose overflow check lets
-// 2147483648 and 2147483649 through (signed overflow: undefined behaviour). No file needs an
-// exponent of ten digits, so every number-like token of the lines it parses numbers from (v, vn,
-// vt, vw, t) must have fewer, counted without leading zeros.
+// Every number-like token of the lines tinyobjloader reads numbers from (v, vn, vt, vw, t) must
+// have an exponent of at most kMaxExponentDigits digits (obj_scan.h says why).
 void check_exponents(std::string_view rest, const std::string& path, std::size_t line_no) {
-  for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
-    std::size_t i = 0;
-    if (token[i] == '+' || token[i] == '-') ++i;
-    const std::size_t mantissa = i;
-    while (i < token.size() && ((token[i] >= '0' && token[i] <= '9') || token[i] == '.')) ++i;
-    if (i == mantissa || i >= token.size() || (token[i] != 'e' && token[i] != 'E')) continue;
-    ++i;
-    if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
-    while (i < token.size() && token[i] == '0') ++i;
-    std::size_t digits = 0;
-    while (i + digits < token.size() && token[i + digits] >= '0' && token[i + digits] <= '9') ++digits;
-    if (digits >= 10)
+  for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest))
+    if (exponent_digits(token) > kMaxExponentDigits)
       throw InputError(path, line_no,
-                       "number '" + printable(token) + "' has an exponent of 10 digits or more (at most 9)");
-  }
+                       "number '" + printable(token) + "' has an exponent of more than " +
+                           std::to_string(kMaxExponentDigits) +
+                           " digits (a float needs at most 2: 3.4e38 to 1.4e-45)");
 }
 
 struct Counts {
@@ -166,6 +156,20 @@ void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRe
 
 }  // namespace
 
+int exponent_digits(std::string_view token) {
+  std::size_t i = 0;
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  const std::size_t mantissa = i;
+  while (i < token.size() && ((token[i] >= '0' && token[i] <= '9') || token[i] == '.')) ++i;
+  if (i == mantissa || i >= token.size() || (token[i] != 'e' && token[i] != 'E')) return 0;
+  ++i;
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  while (i < token.size() && token[i] == '0') ++i;
+  std::size_t digits = 0;
+  while (i + digits < token.size() && token[i + digits] >= '0' && token[i + digits] <= '9') ++digits;
+  return static_cast<int>(std::min<std::size_t>(digits, 1000));
+}
+
 void check_obj_text(std::string_view text, const std::string& path) {
   Counts seen;
   std::vector<ForwardRef> forward;
@@ -176,8 +180,7 @@ void check_obj_text(std::string_view text, const std::string& path) {
     std::string_view rest = next_text_line(text, pos);
     ++line_no;
     const std::string_view keyword = next_token(rest);
-    if (keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "vw" || keyword == "t")
-      check_exponents(rest, path, line_no);
+    const std::string_view numbers = rest;
     if (keyword == "v") {
       check_coordinates(rest, 3, "v", path, line_no);
       ++seen.v;
@@ -192,6 +195,9 @@ void check_obj_text(std::string_view text, const std::string& path) {
     } else if (keyword == "vw") {
       check_skin_weights(rest, path, line_no);
     }
+    // after the coordinates' own checks, so `1e400` is reported as not finite
+    if (keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "vw" || keyword == "t")
+      check_exponents(numbers, path, line_no);
   }
   for (const ForwardRef& ref : forward) {
     const long total = ref.kind == 0 ? seen.v : ref.kind == 1 ? seen.vt : seen.vn;

@@ -13,11 +13,23 @@ namespace rayvec {
 // Faces with more corners than this are rejected before tinyobjloader sees them.
 inline constexpr long kMaxFaceCorners = 10000;
 
+// The most digits the exponent of a number may have, leading zeros not counted, on the lines
+// tinyobjloader reads numbers from (`v`, `vn`, `vt`, `vw`, `t`). Every float is written with two
+// (3.4e38 … 1.4e-45). tinyobjloader computes m·5^e·2^e: from e = 442 on, 5^e is infinite and a zero
+// mantissa makes NaN where the text means 0; at ten digits its int exponent overflows. Both
+// readers refuse such numbers (the fast one by leaving the file to the reference path).
+inline constexpr int kMaxExponentDigits = 2;
+
+// The digits of the exponent of a number token (an optional sign, digits and point, then `e` or
+// `E`, an optional sign and digits), leading zeros not counted; 0 for a token without one.
+int exponent_digits(std::string_view token);
+
 // Throws InputError `file:line: what is wrong` for: a `v`, `vn` or `vt` line with too few
 // coordinates or a coordinate that is not a finite float; a face (`f`) with fewer than 3 corners; a
 // face index of 0, one that is not an integer, or one that refers to a vertex, normal or texture
 // coordinate that does not exist (negative indices are relative, as in the OBJ specification); a
-// face with more than kMaxFaceCorners corners.
+// face with more than kMaxFaceCorners corners; a number whose exponent has more than
+// kMaxExponentDigits digits on a line tinyobjloader reads numbers from.
 void check_obj_text(std::string_view text, const std::string& path);
 
 }  // namespace rayvec

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "io/input_error.h"
@@ -36,34 +37,51 @@ TEST(FuzzRegressions, SkinWeightJointIdBeyondIntIsRejected) {
 
 TEST(FuzzRegressions, SkinWeightJointIdThatTinyobjloaderReadsAsNanIsRejected) {
   // `vw 0 0e0000001000000ad1`: strtod reads 0, but tinyobjloader's parser multiplies the zero
-  // mantissa by 10^1000000 (NaN) and converted that to int (UBSan: float-cast-overflow).
+  // mantissa by 10^1000000 (NaN) and converted that to int (UBSan: float-cast-overflow). The file's
+  // `vt` line two has such a number too (a NaN texture coordinate): the exponent rule now stops the
+  // file there, and a joint id must still be a plain decimal.
   const std::string path = kFuzz + "obj_vw_joint_nan.obj";
   EXPECT_EQ(input_error_of([&] { load_obj(path); }),
             path +
-                ":8: `vw` joint id '0e0000001000000ad1' is not a plain decimal number below 2^31 (digits, "
-                "an optional sign and decimal point)");
+                ":2: number '0e0000001000000QQQQQQQQQQQQQQQQQQQQQQQ01' has an exponent of more than 2 "
+                "digits (a float needs at most 2: 3.4e38 to 1.4e-45)");
+  const std::string dir = test::temp_dir("fuzz_joint");
+  test::write_file(dir + "/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nvw 0 0e5ad1\n");
+  EXPECT_EQ(input_error_of([&] { load_obj(dir + "/m.obj"); }),
+            dir +
+                "/m.obj:5: `vw` joint id '0e5ad1' is not a plain decimal number below 2^31 (digits, an "
+                "optional sign and decimal point)");
 }
 
-TEST(FuzzRegressions, ExponentsOfTenDigitsAreRejectedOnEveryLineTinyobjloaderParses) {
+TEST(FuzzRegressions, ExponentsOfMoreThanTwoDigitsAreRejectedOnEveryLineTinyobjloaderParses) {
   // tinyobjloader's exponent check lets 2147483648 and 2147483649 overflow its int (UBSan:
-  // signed-integer-overflow); found while fixing the `vw` NaN joint id. Each line sends the file
-  // down tinyobjloader's path (a `vw` or `t` line, or a polygon of 5 corners).
+  // signed-integer-overflow), and from 10^442 on it multiplies a zero mantissa by infinity: NaN
+  // where the text means 0 (`v 0e1000` became a NaN vertex). Each line sends the file down
+  // tinyobjloader's path (a `vw` or `t` line, or a polygon of 5 corners); the last two go through
+  // the fast reader, which must leave them to that path and so give the same error.
   const std::string dir = test::temp_dir("fuzz_exponent");
-  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 2 0\nf 1 2 3 4 5\n";
-  const std::pair<const char*, const char*> cases[] = {{"v 0e2147483649 0 0\n", "0e2147483649"},
-                                                       {"vn 0 0 1E+0002147483648\n", "1E+0002147483648"},
-                                                       {"vt 0 -.5e-2147483649x\n", "-.5e-2147483649x"},
-                                                       {"vw 0 1 0e2147483649\n", "0e2147483649"},
-                                                       {"t crease 0/1/0 1.0e2147483649\n", "1.0e2147483649"},
-                                                       {"v 0 0 0 1 0e9999999999 1\n", "0e9999999999"}};
-  for (const auto& [line, token] : cases) {
-    test::write_file(dir + "/m.obj", tri + line);
+  const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 2 0\n";
+  const std::string pentagon = vertices + "f 1 2 3 4 5\n", triangle = vertices + "f 1 2 3\n";
+  const std::tuple<std::string, const char*, const char*> cases[] = {
+      {pentagon, "v 0e2147483649 0 0\n", "0e2147483649"},
+      {pentagon, "vn 0 0 0E+0002147483648\n", "0E+0002147483648"},
+      {pentagon, "vt 0 -.5e-2147483649x\n", "-.5e-2147483649x"},
+      {pentagon, "vw 0 1 0e2147483649\n", "0e2147483649"},
+      {pentagon, "t crease 0/1/0 1.0e2147483649\n", "1.0e2147483649"},
+      {pentagon, "v 0 0 0 1 0e9999999999 1\n", "0e9999999999"},
+      {pentagon, "v 0e1000 0 0\n", "0e1000"},
+      {pentagon, "vn 0 0 1e-100\n", "1e-100"},
+      {triangle, "v 0e1000 0 0\n", "0e1000"},
+      {triangle, "vt 0 0e0000001000000041\n", "0e0000001000000041"}};
+  for (const auto& [faces, line, token] : cases) {
+    test::write_file(dir + "/m.obj", faces + line);
     EXPECT_EQ(input_error_of([&] { load_obj(dir + "/m.obj"); }),
-              dir + "/m.obj:7: number '" + token + "' has an exponent of 10 digits or more (at most 9)")
+              dir + "/m.obj:7: number '" + token +
+                  "' has an exponent of more than 2 digits (a float needs at most 2: 3.4e38 to 1.4e-45)")
         << line;
   }
-  test::write_file(dir + "/m.obj", tri + "v 0 0 1e000000000003\nvt 0.5 1e-999999999\n");
-  EXPECT_NO_THROW(load_obj(dir + "/m.obj"));  // nine digits, leading zeros not counted
+  test::write_file(dir + "/m.obj", pentagon + "v 0 0 1e000000000003\nvt 0.5 1.4e-45\nvn 0 0 -3.4E+38\n");
+  EXPECT_NO_THROW(load_obj(dir + "/m.obj"));  // two digits, leading zeros not counted
 }
 
 TEST(FuzzRegressions, JsonNumberOverflowIsAnInputError) {

@@ -58,11 +58,12 @@ void expect_close(const Points& a, const Points& b, int dims, const std::string&
 // Loads `path` through tinyobjloader and through the fast reader in 1..4 pieces; all must agree.
 // Returns whether the fast reader took the file.
 bool expect_same_as_reference(const std::string& path) {
-  const Outcome ref = load(path, {0, true});
+  const Outcome ref = load(path, {.reference = true});
+  EXPECT_FALSE(ref.fast) << path << ": the reference load took the fast reader";
   bool fast = false;
   for (int threads = 1; threads <= 4; ++threads) {
     const std::string what = path + " (" + std::to_string(threads) + " pieces)";
-    const Outcome got = load(path, {threads, false});
+    const Outcome got = load(path, {.threads = threads});
     fast = fast || got.fast;
     EXPECT_EQ(got.error, ref.error) << what;
     const ObjModel &a = got.model, &b = ref.model;
@@ -151,6 +152,12 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
   same_on("bad_index", quad + "f 1 2 9\n");
   same_on("zero_index", quad + "f 0 1 2\n");
   same_on("nan", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  same_on("zero_times_huge_exponent", "v 0e1000 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  same_on("ten_digit_exponent", "v 0e2147483649 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  same_on("vt_long_exponent", quad + "vt 0 0e0000001000000041\nf 1 2 3\n");
+  same_on("unread_token_long_exponent", quad + "vt 0 4e00 0 4e000100\nv 0 0 0 1 0e999\nf 1 2 3\n");
+  same_on("tag_long_exponent", quad + "f 1 2 3\nt crease 0/1/0 0e0000001000000041\n");
+  EXPECT_TRUE(same_on("two_digit_exponents", quad + "vt 0 1.4e-45\nvn 0 0 -3.4E+38\nf 1/1/1 2/1/1 3/1/1\n"));
   same_on("partial_number", "v 1.5x 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   same_on("slashes", quad + "f 1// 2// 3//\n");
   same_on("vt_word", quad + "vt 0.5 abc\nf 1/1 2/1 3/1\n");
