@@ -11,6 +11,7 @@
 #include <new>
 
 #include "bvh/build_prim.h"
+#include "bvh/sah_bins.h"
 #include "bvh/spatial_split.h"
 #include "geometry/triangle_mesh.h"
 #include "platform/large_buffer.h"
@@ -19,8 +20,6 @@
 namespace rayvec {
 namespace {
 
-constexpr int kMaxBins = 64;
-constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr uint32_t kParallelBinning = 2048;        // ranges this large may bin in parallel chunks
 constexpr uint32_t kParallelPartition = 1u << 16;  // ... and partition in parallel chunks
 constexpr int kBinningChunks = 4;
@@ -40,85 +39,7 @@ constexpr float kSplitNodeOverlap = 0.3f;
 constexpr float kSplitAxisOverlap = 0.05f;
 
 using Prim = BuildPrim;
-
-// min/max that keep the first operand when the second is NaN (a NaN vertex never widens a box);
-// branch-free (minss/maxss).
-float min_keep(float a, float b) { return b < a ? b : a; }
-float max_keep(float a, float b) { return b > a ? b : a; }
-
-struct BinBox {
-  float lo[3] = {kInf, kInf, kInf};
-  float hi[3] = {-kInf, -kInf, -kInf};
-  uint32_t count = 0;
-  void grow(const Prim& p) {
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = min_keep(lo[a], p.lo[a]);
-      hi[a] = max_keep(hi[a], p.hi[a]);
-    }
-    ++count;
-  }
-  void grow(const BinBox& b) {
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = min_keep(lo[a], b.lo[a]);
-      hi[a] = max_keep(hi[a], b.hi[a]);
-    }
-    count += b.count;
-  }
-  BBox box() const { return BBox{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
-  float half_area() const { return box().half_area(); }
-};
-
-// Bins of all three axes over one range of primitives: each bin's box as lo[4], hi[4] (lane 3
-// unused) so a primitive grows it with one 4-lane min and max, and its primitive count.
-struct Bins {
-  alignas(16) float box[3][kMaxBins][8];
-  uint32_t count[3][kMaxBins];
-  // empties the first `bins` bins of each axis (the others are never read)
-  void clear(int bins) {
-    for (int a = 0; a < 3; ++a)
-      for (int k = 0; k < bins; ++k) {
-        sse::Float4::broadcast(kInf).store(box[a][k]);
-        sse::Float4::broadcast(-kInf).store(box[a][k] + 4);
-        count[a][k] = 0;
-      }
-  }
-  BinBox at(int a, int k) const {
-    const float* b = box[a][k];
-    BinBox r;
-    for (int i = 0; i < 3; ++i) {
-      r.lo[i] = b[i];
-      r.hi[i] = b[4 + i];
-    }
-    r.count = count[a][k];
-    return r;
-  }
-  void grow(const Bins& o, int bins) {
-    for (int a = 0; a < 3; ++a)
-      for (int k = 0; k < bins; ++k) {
-        float* b = box[a][k];
-        sse::vmin(sse::Float4::load(o.box[a][k]), sse::Float4::load(b)).store(b);
-        sse::vmax(sse::Float4::load(o.box[a][k] + 4), sse::Float4::load(b + 4)).store(b + 4);
-        count[a][k] += o.count[a][k];
-      }
-  }
-};
-
-struct Split {
-  int axis = -1;
-  int bin = 0;  // primitives in bins [0, bin] go left
-  float cost = kInf;
-  BBox left, right;
-};
-
-// Bin of a centroid coordinate; NaN and out-of-range values are clamped to the end bins. Written as
-// the x86 max and min (NaN gives the second operand) so that Builder::bin_range's 4-lane form gives
-// the same bin.
-int bin_of(float c, float lo, float scale, int bins) {
-  float f = (c - lo) * scale;
-  f = f > 0.0f ? f : 0.0f;
-  const float last = float(bins - 1);
-  return int(f < last ? f : last);
-}
+using namespace sah_bins;
 
 class Builder {
  public:
