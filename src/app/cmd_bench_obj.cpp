@@ -44,15 +44,17 @@ void register_bench_obj_command(Command& bench) {
           "Loads the file --repeats times in each of three ways, alternating: `reference` (rayvec's\n"
           "error pre-scan, then tinyobjloader), `fast-1` and `fast-2` (rayvec's reader on 1 and 2\n"
           "threads). Prints the seconds of each phase of the fastest load and the file's megabytes\n"
-          "(10^6 bytes) per second of the whole load. `fast reader: no` means the file lies outside\n"
-          "the fast reader's subset (e.g. polygons of 5+ corners) and both ways used tinyobjloader.\n"
+          "(10^6 bytes) per second of the whole load, and the reader that loaded it. `fast reader:\n"
+          "no` means the file lies outside the fast reader's subset (e.g. polygons of 5+ corners)\n"
+          "and every way used tinyobjloader.\n"
           "Example (the 1M-triangle sphere of docs/benchmarks.md):\n"
           "  python3 scripts/make_bumpy_sphere.py sphere1m.obj\n"
           "  rayvec bench obj sphere1m.obj --repeats 5")
       .run([] {
         if (o.repeats < 1) throw InputError("--repeats: must be 1 or more");
-        std::vector<Way> ways = {
-            {"reference", {0, true}, {}}, {"fast-1", {1, false}, {}}, {"fast-2", {2, false}, {}}};
+        std::vector<Way> ways = {{"reference", {.reference = true}, {}},
+                                 {"fast-1", {.threads = 1}, {}},
+                                 {"fast-2", {.threads = 2}, {}}};
         std::size_t triangles = 0;
         bool fast = true;
         for (int r = 0; r < o.repeats; ++r)
@@ -66,12 +68,12 @@ void register_bench_obj_command(Command& bench) {
         const double mb = double(std::filesystem::file_size(o.model)) / 1e6;
         std::printf("file: %s (%.1f MB, %zu triangles)\nfast reader: %s\n", o.model.c_str(), mb, triangles,
                     fast ? "yes" : "no");
-        std::printf("%-10s %8s %8s %8s %8s %8s %8s\n", "way", "read_s", "check_s", "parse_s", "convert_s",
-                    "total_s", "MB/s");
+        std::printf("%-10s %8s %8s %8s %8s %8s %8s  %s\n", "way", "read_s", "check_s", "parse_s", "convert_s",
+                    "total_s", "MB/s", "reader");
         for (const Way& w : ways) {
           const ObjLoadTimes& t = best(w.runs);
-          std::printf("%-10s %8.4f %8.4f %8.4f %8.4f %8.4f %8.1f\n", w.name, t.read, t.check, t.parse,
-                      t.convert, total(t), mb / total(t));
+          std::printf("%-10s %8.4f %8.4f %8.4f %8.4f %8.4f %8.1f  %s\n", w.name, t.read, t.check, t.parse,
+                      t.convert, total(t), mb / total(t), t.fast ? "fast" : "tinyobjloader");
         }
         return 0;
       });

@@ -31,6 +31,8 @@ struct ObjModel {
 };
 
 // How load_obj reads: rayvec's fast reader where the file allows (obj_fast.h), else tinyobjloader.
+// Build it with designated initializers ({.reference = true}): its fields convert into each other, so
+// a positional {0, true} silently changes meaning when a field is added.
 struct ObjLoadOptions {
   int threads = 0;  // the fast reader's threads (pieces of the file); 0: by available_threads
   // The threads the caller may use (its --threads): with two or more, a file of kObjTwoThreadsFrom
