@@ -28,33 +28,42 @@ std::string_view next_token(std::string_view& line) {
   return token;
 }
 
-// `v`, `vn`, `vt`: the first `needed` numbers must be finite floats (tinyobjloader stores floats).
-void check_coordinates(std::string_view rest, int needed, const char* kind, const std::string& path,
-                       std::size_t line_no) {
-  for (int k = 0; k < needed; ++k) {
+// Coordinate k (0-based) of a `v`, `vn` or `vt` line must be a finite float (tinyobjloader stores
+// floats); a `v` coordinate must also lie within the intersectors' range.
+void check_coordinate(std::string_view token, int k, const char* kind, const std::string& path,
+                      std::size_t line_no) {
+  std::string_view digits = token;
+  if (digits.size() > 1 && digits.front() == '+') digits.remove_prefix(1);
+  double value = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  const bool parsed =
+      end == digits.data() + digits.size() && (ec == std::errc() || ec == std::errc::result_out_of_range);
+  // from_chars leaves `value` unchanged (0) when out of range: strtod tells 1e400 (inf,
+  // rejected below) from 1e-400 (0, accepted).
+  if (parsed && ec == std::errc::result_out_of_range)
+    value = std::strtod(std::string(digits).c_str(), nullptr);
+  if (!parsed || !std::isfinite(value) || !std::isfinite(static_cast<float>(value)))
+    throw InputError(path, line_no,
+                     std::string("`") + kind + "` coordinate " + std::to_string(k + 1) + " '" +
+                         printable(token) + "' is not a finite number");
+  if (kind[0] == 'v' && kind[1] == '\0' && !coordinate_in_range(static_cast<float>(value)))
+    throw InputError(path, line_no,
+                     "`v` coordinate " + std::to_string(k + 1) + " '" + printable(token) + "' is beyond " +
+                         kCoordinateRangeText);
+}
+
+// `v`, `vn`, `vt`: the first `needed` numbers must be finite floats, and so must the next `optional`
+// ones that are present (a `vt`'s second, which tinyobjloader reads when it is there), up to a `#`.
+void check_coordinates(std::string_view rest, int needed, int optional, const char* kind,
+                       const std::string& path, std::size_t line_no) {
+  for (int k = 0; k < needed + optional; ++k) {
     const std::string_view token = next_token(rest);
+    if (k >= needed && (token.empty() || token.front() == '#')) return;
     if (token.empty())
       throw InputError(path, line_no,
                        std::string("`") + kind + "` needs " + std::to_string(needed) +
                            " coordinates, found " + std::to_string(k));
-    std::string_view digits = token;
-    if (digits.size() > 1 && digits.front() == '+') digits.remove_prefix(1);
-    double value = 0;
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    const bool parsed =
-        end == digits.data() + digits.size() && (ec == std::errc() || ec == std::errc::result_out_of_range);
-    // from_chars leaves `value` unchanged (0) when out of range: strtod tells 1e400 (inf,
-    // rejected below) from 1e-400 (0, accepted).
-    if (parsed && ec == std::errc::result_out_of_range)
-      value = std::strtod(std::string(digits).c_str(), nullptr);
-    if (!parsed || !std::isfinite(value) || !std::isfinite(static_cast<float>(value)))
-      throw InputError(path, line_no,
-                       std::string("`") + kind + "` coordinate " + std::to_string(k + 1) + " '" +
-                           printable(token) + "' is not a finite number");
-    if (kind[0] == 'v' && kind[1] == '\0' && !coordinate_in_range(static_cast<float>(value)))
-      throw InputError(path, line_no,
-                       "`v` coordinate " + std::to_string(k + 1) + " '" + printable(token) + "' is beyond " +
-                           kCoordinateRangeText);
+    check_coordinate(token, k, kind, path, line_no);
   }
 }
 
@@ -182,13 +191,13 @@ void check_obj_text(std::string_view text, const std::string& path) {
     const std::string_view keyword = next_token(rest);
     const std::string_view numbers = rest;
     if (keyword == "v") {
-      check_coordinates(rest, 3, "v", path, line_no);
+      check_coordinates(rest, 3, 0, "v", path, line_no);
       ++seen.v;
     } else if (keyword == "vn") {
-      check_coordinates(rest, 3, "vn", path, line_no);
+      check_coordinates(rest, 3, 0, "vn", path, line_no);
       ++seen.vn;
     } else if (keyword == "vt") {
-      check_coordinates(rest, 1, "vt", path, line_no);
+      check_coordinates(rest, 1, 1, "vt", path, line_no);
       ++seen.vt;
     } else if (keyword == "f") {
       check_face(rest, seen, forward, path, line_no);

@@ -25,10 +25,10 @@ inline constexpr int kMaxExponentDigits = 2;
 int exponent_digits(std::string_view token);
 
 // Throws InputError `file:line: what is wrong` for: a `v`, `vn` or `vt` line with too few
-// coordinates or a coordinate that is not a finite float; a face (`f`) with fewer than 3 corners; a
-// face index of 0, one that is not an integer, or one that refers to a vertex, normal or texture
-// coordinate that does not exist (negative indices are relative, as in the OBJ specification); a
-// face with more than kMaxFaceCorners corners; a number whose exponent has more than
+// coordinates or a coordinate that is not a finite float (a `vt`'s optional second one too); a face
+// (`f`) with fewer than 3 corners; a face index of 0, one that is not an integer, or one that refers to a
+// vertex, normal or texture coordinate that does not exist (negative indices are relative, as in the OBJ
+// specification); a face with more than kMaxFaceCorners corners; a number whose exponent has more than
 // kMaxExponentDigits digits on a line tinyobjloader reads numbers from.
 void check_obj_text(std::string_view text, const std::string& path);
 

@@ -38,13 +38,11 @@ TEST(FuzzRegressions, SkinWeightJointIdBeyondIntIsRejected) {
 TEST(FuzzRegressions, SkinWeightJointIdThatTinyobjloaderReadsAsNanIsRejected) {
   // `vw 0 0e0000001000000ad1`: strtod reads 0, but tinyobjloader's parser multiplies the zero
   // mantissa by 10^1000000 (NaN) and converted that to int (UBSan: float-cast-overflow). The file's
-  // `vt` line two has such a number too (a NaN texture coordinate): the exponent rule now stops the
-  // file there, and a joint id must still be a plain decimal.
+  // `vt` line two has such a number too (a NaN texture coordinate), now refused there as a `vt`'s
+  // second value that is not a number; and a joint id must still be a plain decimal.
   const std::string path = kFuzz + "obj_vw_joint_nan.obj";
   EXPECT_EQ(input_error_of([&] { load_obj(path); }),
-            path +
-                ":2: number '0e0000001000000QQQQQQQQQQQQQQQQQQQQQQQ01' has an exponent of more than 2 "
-                "digits (a float needs at most 2: 3.4e38 to 1.4e-45)");
+            path + ":2: `vt` coordinate 2 '0e0000001000000QQQQQQQQQQQQQQQQQQQQQQQ01' is not a finite number");
   const std::string dir = test::temp_dir("fuzz_joint");
   test::write_file(dir + "/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nvw 0 0e5ad1\n");
   EXPECT_EQ(input_error_of([&] { load_obj(dir + "/m.obj"); }),
@@ -65,7 +63,7 @@ TEST(FuzzRegressions, ExponentsOfMoreThanTwoDigitsAreRejectedOnEveryLineTinyobjl
   const std::tuple<std::string, const char*, const char*> cases[] = {
       {pentagon, "v 0e2147483649 0 0\n", "0e2147483649"},
       {pentagon, "vn 0 0 0E+0002147483648\n", "0E+0002147483648"},
-      {pentagon, "vt 0 -.5e-2147483649x\n", "-.5e-2147483649x"},
+      {pentagon, "vt 0 -.5e-2147483649\n", "-.5e-2147483649"},
       {pentagon, "vw 0 1 0e2147483649\n", "0e2147483649"},
       {pentagon, "t crease 0/1/0 1.0e2147483649\n", "1.0e2147483649"},
       {pentagon, "v 0 0 0 1 0e9999999999 1\n", "0e9999999999"},
@@ -82,6 +80,23 @@ TEST(FuzzRegressions, ExponentsOfMoreThanTwoDigitsAreRejectedOnEveryLineTinyobjl
   }
   test::write_file(dir + "/m.obj", pentagon + "v 0 0 1e000000000003\nvt 0.5 1.4e-45\nvn 0 0 -3.4E+38\n");
   EXPECT_NO_THROW(load_obj(dir + "/m.obj"));  // two digits, leading zeros not counted
+}
+
+TEST(FuzzRegressions, ATextureCoordinatesSecondValueMustBeAFiniteFloat) {
+  // Found while reviewing the exponent rule: obj_scan checked only a `vt`'s first value, while
+  // tinyobjloader reads the second too, so `vt 0 1e39` (or 320 digits) gave an infinite texture
+  // coordinate on both readers (the fast one leaves the line to the reference path). A comment
+  // after the first value is still allowed.
+  const std::string dir = test::temp_dir("fuzz_vt_second");
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/1 3/1\n";
+  test::write_file(dir + "/m.obj", tri + "vt 0 1e39\n");
+  EXPECT_EQ(input_error_of([&] { load_obj(dir + "/m.obj"); }),
+            dir + "/m.obj:5: `vt` coordinate 2 '1e39' is not a finite number");
+  test::write_file(dir + "/m.obj", tri + "vt 0 " + std::string(320, '1') + "\n");
+  EXPECT_NE(input_error_of([&] { load_obj(dir + "/m.obj"); }).find(":5: `vt` coordinate 2 '111"),
+            std::string::npos);
+  test::write_file(dir + "/m.obj", tri + "vt 0.5 # one value\n");
+  EXPECT_NO_THROW(load_obj(dir + "/m.obj"));
 }
 
 TEST(FuzzRegressions, JsonNumberOverflowIsAnInputError) {

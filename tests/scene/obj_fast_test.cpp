@@ -156,6 +156,8 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
   same_on("ten_digit_exponent", "v 0e2147483649 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   same_on("vt_long_exponent", quad + "vt 0 0e0000001000000041\nf 1 2 3\n");
   same_on("unread_token_long_exponent", quad + "vt 0 4e00 0 4e000100\nv 0 0 0 1 0e999\nf 1 2 3\n");
+  same_on("vt_second_beyond_float", quad + "vt 0 1e39\nf 1/1 2/1 3/1\n");
+  same_on("vt_comment", quad + "vt 0.5 # c\nf 1/1 2/1 3/1\n");
   same_on("tag_long_exponent", quad + "f 1 2 3\nt crease 0/1/0 0e0000001000000041\n");
   EXPECT_TRUE(same_on("two_digit_exponents", quad + "vt 0 1.4e-45\nvn 0 0 -3.4E+38\nf 1/1/1 2/1/1 3/1/1\n"));
   same_on("partial_number", "v 1.5x 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
