@@ -37,9 +37,13 @@ Outcome load(const std::string& path, const rayvec::ObjLoadOptions& options) {
       for (uint32_t i : t)
         if (i >= model.mesh.positions.size()) __builtin_trap();
     if (model.triangle_material.size() != model.mesh.triangles.size()) __builtin_trap();
-    // ... and every position is finite (obj_scan rejects nan/inf text that tinyobjloader reads).
-    for (const rayvec::Vec3f& p : model.mesh.positions)
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
+    // ... and every position, normal and texture coordinate is finite (obj_scan rejects nan/inf
+    // text that tinyobjloader reads).
+    for (const auto* points : {&model.mesh.positions, &model.normals})
+      for (const rayvec::Vec3f& p : *points)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
+    for (const auto& t : model.texcoords)
+      if (!std::isfinite(t[0]) || !std::isfinite(t[1])) __builtin_trap();
   } catch (const rayvec::InputError& e) {
     out.error = e.what();
     // load_obj's own guards behind obj_scan: reaching them means the scan missed a bad face and
