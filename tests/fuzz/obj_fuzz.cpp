@@ -37,6 +37,17 @@ Outcome load(const std::string& path, const rayvec::ObjLoadOptions& options) {
       for (uint32_t i : t)
         if (i >= model.mesh.positions.size()) __builtin_trap();
     if (model.triangle_material.size() != model.mesh.triangles.size()) __builtin_trap();
+    // ... and every corner's normal and texture coordinate index is -1 (none) or a valid one.
+    const auto check_corners = [&](const auto& corners, std::size_t count) {
+      if (!corners.empty() && corners.size() != model.mesh.triangles.size()) __builtin_trap();
+      for (const auto& c : corners)
+        for (int32_t i : c)
+          if (i < -1 || (i >= 0 && std::size_t(i) >= count)) __builtin_trap();
+    };
+    check_corners(model.triangle_normals, model.normals.size());
+    check_corners(model.triangle_texcoords, model.texcoords.size());
+    for (int32_t m : model.triangle_material)
+      if (m < -1 || (m >= 0 && std::size_t(m) >= model.materials.size())) __builtin_trap();
     // ... and every position, normal and texture coordinate is finite (obj_scan rejects nan/inf
     // text that tinyobjloader reads).
     for (const auto* points : {&model.mesh.positions, &model.normals})
