@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/input_error.h"
@@ -144,26 +145,29 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
   EXPECT_TRUE(same_on("blanks",
                       "# c\n\n  \t\nv 0 0 0 1 0 0\r\nv\t1 0 0\t\r\nv 0 1 0 # c\n f 1 2 3 \t\n"
                       "vp 1 2\nf 1 2 3"));
-  // handed to the reference, which must still give its own result or error
-  same_on("forward", "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
-  same_on("pentagon", quad + "f 1 2 3 4 5\n");
-  same_on("lone_cr", quad + "f 1 2 3\rf 2 3 4\r");
-  same_on("lines", quad + "l 1 2\nf 1 2 3\n");
-  same_on("bad_index", quad + "f 1 2 9\n");
-  same_on("zero_index", quad + "f 0 1 2\n");
-  same_on("nan", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  same_on("zero_times_huge_exponent", "v 0e1000 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  same_on("ten_digit_exponent", "v 0e2147483649 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  same_on("vt_long_exponent", quad + "vt 0 0e0000001000000041\nf 1 2 3\n");
-  same_on("unread_token_long_exponent", quad + "vt 0 4e00 0 4e000100\nv 0 0 0 1 0e999\nf 1 2 3\n");
-  same_on("vt_second_beyond_float", quad + "vt 0 1e39\nf 1/1 2/1 3/1\n");
-  same_on("vt_comment", quad + "vt 0.5 # c\nf 1/1 2/1 3/1\n");
-  same_on("tag_long_exponent", quad + "f 1 2 3\nt crease 0/1/0 0e0000001000000041\n");
   EXPECT_TRUE(same_on("two_digit_exponents", quad + "vt 0 1.4e-45\nvn 0 0 -3.4E+38\nf 1/1/1 2/1/1 3/1/1\n"));
-  same_on("partial_number", "v 1.5x 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  same_on("slashes", quad + "f 1// 2// 3//\n");
-  same_on("vt_word", quad + "vt 0.5 abc\nf 1/1 2/1 3/1\n");
-  same_on("no_faces", quad);
+  // handed to the reference, which must still give its own result or error
+  const std::pair<const char*, std::string> handed[] = {
+      {"forward", "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"},
+      {"pentagon", quad + "f 1 2 3 4 5\n"},
+      {"lone_cr", quad + "f 1 2 3\rf 2 3 4\r"},
+      {"lines", quad + "l 1 2\nf 1 2 3\n"},
+      {"bad_index", quad + "f 1 2 9\n"},
+      {"zero_index", quad + "f 0 1 2\n"},
+      {"nan", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
+      {"zero_times_huge_exponent", "v 0e1000 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
+      {"ten_digit_exponent", "v 0e2147483649 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
+      {"vt_long_exponent", quad + "vt 0 0e0000001000000041\nf 1 2 3\n"},
+      {"unread_token_long_exponent", quad + "vt 0 4e00 0 4e000100\nv 0 0 0 1 0e999\nf 1 2 3\n"},
+      {"vt_second_beyond_float", quad + "vt 0 1e39\nf 1/1 2/1 3/1\n"},
+      {"vt_comment", quad + "vt 0.5 # c\nf 1/1 2/1 3/1\n"},
+      {"tag_long_exponent", quad + "f 1 2 3\nt crease 0/1/0 0e0000001000000041\n"},
+      {"partial_number", "v 1.5x 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
+      {"slashes", quad + "f 1// 2// 3//\n"},
+      {"vt_word", quad + "vt 0.5 abc\nf 1/1 2/1 3/1\n"},
+      {"no_faces", quad},
+  };
+  for (const auto& [name, obj] : handed) same_on(name, obj);
 }
 
 // In 3 pieces the face's piece holds one vt, so its relative -2 is -1 inside the piece (a vt of the
