@@ -90,8 +90,7 @@ class Cursor {
       const fast_float::from_chars_result r = fast_float::from_chars(start, end_, value);
       if (r.ec != std::errc()) return false;
       // an exponent obj_scan refuses: the reference path gives that error
-      if (exponent_digits(std::string_view(start, std::size_t(r.ptr - start))) > kMaxExponentDigits)
-        return false;
+      if (exponent_too_long(std::string_view(start, std::size_t(r.ptr - start)))) return false;
       p_ = r.ptr;
     }
     out = static_cast<float>(value);
@@ -132,7 +131,7 @@ struct Corner {
 // from, read here or not: a line it refuses is left to the reference path and its error.
 bool exponents_accepted(Cursor& in) {
   for (in.skip_blanks(); !in.at_line_end(); in.skip_blanks())
-    if (exponent_digits(in.token()) > kMaxExponentDigits) return false;
+    if (exponent_too_long(in.token())) return false;
   return true;
 }
 

@@ -1,6 +1,5 @@
 #include "scene/obj_scan.h"
 
-#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <string>
@@ -107,7 +106,7 @@ void check_skin_weights(std::string_view rest, const std::string& path, std::siz
 // have an exponent of at most kMaxExponentDigits digits (obj_scan.h says why).
 void check_exponents(std::string_view rest, const std::string& path, std::size_t line_no) {
   for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest))
-    if (exponent_digits(token) > kMaxExponentDigits)
+    if (exponent_too_long(token))
       throw InputError(path, line_no,
                        "number '" + printable(token) + "' has an exponent of more than " +
                            std::to_string(kMaxExponentDigits) +
@@ -165,18 +164,18 @@ void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRe
 
 }  // namespace
 
-int exponent_digits(std::string_view token) {
+bool exponent_too_long(std::string_view token) {
   std::size_t i = 0;
   if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
   const std::size_t mantissa = i;
   while (i < token.size() && ((token[i] >= '0' && token[i] <= '9') || token[i] == '.')) ++i;
-  if (i == mantissa || i >= token.size() || (token[i] != 'e' && token[i] != 'E')) return 0;
+  if (i == mantissa || i >= token.size() || (token[i] != 'e' && token[i] != 'E')) return false;
   ++i;
   if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
   while (i < token.size() && token[i] == '0') ++i;
   std::size_t digits = 0;
   while (i + digits < token.size() && token[i + digits] >= '0' && token[i + digits] <= '9') ++digits;
-  return static_cast<int>(std::min<std::size_t>(digits, 1000));
+  return digits > std::size_t(kMaxExponentDigits);
 }
 
 void check_obj_text(std::string_view text, const std::string& path) {

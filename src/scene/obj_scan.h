@@ -20,9 +20,9 @@ inline constexpr long kMaxFaceCorners = 10000;
 // readers refuse such numbers (the fast one by leaving the file to the reference path).
 inline constexpr int kMaxExponentDigits = 2;
 
-// The digits of the exponent of a number token (an optional sign, digits and point, then `e` or
-// `E`, an optional sign and digits), leading zeros not counted; 0 for a token without one.
-int exponent_digits(std::string_view token);
+// Whether a number token (an optional sign, digits and point, then `e` or `E`, an optional sign
+// and digits) has an exponent of more than kMaxExponentDigits digits, leading zeros not counted.
+bool exponent_too_long(std::string_view token);
 
 // Throws InputError `file:line: what is wrong` for: a `v`, `vn` or `vt` line with too few
 // coordinates or a coordinate that is not a finite float (a `vt`'s optional second one too); a face
