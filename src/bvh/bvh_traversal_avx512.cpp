@@ -14,6 +14,7 @@ constexpr Isa kThisIsa = Isa::avx512;
 
 #include "bvh/single_ray_traversal.inl"
 #include "kernels/moller_trumbore.inl"
+#include "kernels/mt_float.inl"
 #include "kernels/watertight.inl"
 #include "bvh/packet_leaf.inl"
 #include "bvh/watertight_packet_leaf.inl"

@@ -5,7 +5,7 @@
 // (benchmarks.md#decision-any-hit-leaf-lanes). Other tables go through the table. Same occlusion as
 // the table's: the same kernel body, and the table entry's finite_ray test is already passed by every
 // ray reaching a leaf (BvhAccelerator rejects the others). Included by the ISA units after
-// single_ray_traversal.inl and kernels/moller_trumbore.inl, where kThisIsa names the unit's ISA.
+// single_ray_traversal.inl and kernels/mt_float.inl, where kThisIsa names the unit's ISA.
 
 namespace {
 

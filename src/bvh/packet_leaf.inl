@@ -3,7 +3,7 @@
 // leaf of L triangles costs L vector steps for the whole packet instead of one single-ray kernel
 // call (setup, steps, lane reduction) per active lane (Wald, Slusallek, Benthin & Wagner 2001; the
 // layout of Embree's packet intersectors, transposed from Sena et al. 2018's one ray × W triangles).
-// Included by the BVH ISA units (bvh_traversal_<isa>.cpp) after moller_trumbore.inl, inside
+// Included by the BVH ISA units (bvh_traversal_<isa>.cpp) after mt_float.inl, inside
 // namespace rayvec::<isa>; used by packet_traversal.inl.
 //
 // Exactness: each lane gets exactly what the single-ray `mt` kernel (closest_mt_float) gives for

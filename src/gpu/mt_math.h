@@ -1,5 +1,6 @@
-// Möller–Trumbore for one ray and one triangle, the arithmetic of the CPU kernels in
-// kernels/moller_trumbore.inl written out for a single lane, for the device and the host alike.
+// Möller–Trumbore for one ray and one triangle: the arithmetic of the CPU kernels
+// (kernels/mt_float.inl, kernels/moller_trumbore.inl) written out for a single lane, for the device
+// and the host alike.
 //   MtFloat  — intersector `mt`: closest_mt_float / occluded_mt_float, over the precomputed normal
 //              (det = d·ng, u·det = −(e2·c), v·det = e1·c, t·det = s·ng with s = v0 − o, c = s × d).
 //   MtDouble — intersector `mt64`: test_mt over vdouble, edges formed in double from the vertices.

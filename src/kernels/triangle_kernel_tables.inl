@@ -1,6 +1,6 @@
 // The function tables of one ISA unit: every intersector instantiated over that unit's vector types.
 // Included last by triangle_kernels_<isa>.cpp, inside namespace rayvec::<isa>, after it defines
-// kThisIsa and includes the kernel bodies (moller_trumbore.inl, watertight.inl).
+// kThisIsa and includes the kernel bodies (moller_trumbore.inl, mt_float.inl, watertight.inl).
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).

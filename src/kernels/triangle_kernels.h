@@ -44,7 +44,7 @@ struct TriangleKernels {
                        Hit* hits) = nullptr;
 };
 
-// How the float `mt` closest-hit kernels pre-test a step before its exact depth test (moller_trumbore.inl):
+// How the float `mt` closest-hit kernels pre-test a step before its exact depth test (mt_float.inl):
 // both are conservative and give the same hits, bit for bit; they differ only in speed, which depends
 // on how a CPU executes mask instructions (benchmarks.md#decision-sign-pretest).
 //   sign_bits         — the five conditions as sign bits, ORed and tested by one mask instruction

@@ -145,7 +145,7 @@ RAYVEC_INLINE float hmax_lanes(vfloat v, unsigned lanes) {
 
 // Bitwise or of three vectors, and the lanes whose sign bit is clear (+0, positive, +inf, or a NaN
 // with a clear sign): the float `mt` pre-test ORs its values and tests the sign once
-// (moller_trumbore.inl, mt_sign_pretest).
+// (mt_float.inl, mt_sign_pretest).
 RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) { return {_mm256_or_ps(_mm256_or_ps(a.v, b.v), c.v)}; }
 RAYVEC_INLINE vmaskf sign_clear(vfloat a) {
   return {_mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_castps_si256(a.v), _mm256_set1_epi32(-1)))};

@@ -157,7 +157,7 @@ RAYVEC_INLINE float hmax_lanes(vfloat v, unsigned lanes) {
 
 // Bitwise or of three vectors, and the lanes whose sign bit is clear (+0, positive, +inf, or a NaN
 // with a clear sign): the float `mt` pre-test ORs its values and tests the sign once
-// (moller_trumbore.inl, mt_sign_pretest).
+// (mt_float.inl, mt_sign_pretest).
 RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) {
   return {_mm512_castsi512_ps(_mm512_ternarylogic_epi32(_mm512_castps_si512(a.v), _mm512_castps_si512(b.v),
                                                         _mm512_castps_si512(c.v), 0xFE))};

@@ -123,7 +123,7 @@ RAYVEC_INLINE T hmin(vlane<T, B> a) {
 
 // Bitwise or of three vectors, and the lanes whose sign bit is clear (+0, positive, +inf, or a NaN
 // with a clear sign): the float `mt` pre-test ORs its values and tests the sign once
-// (moller_trumbore.inl, mt_sign_pretest).
+// (mt_float.inl, mt_sign_pretest).
 RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) {
   return {std::bit_cast<float>(std::bit_cast<uint32_t>(a.v) | std::bit_cast<uint32_t>(b.v) |
                                std::bit_cast<uint32_t>(c.v))};

@@ -1,0 +1,385 @@
+// `mt` in float: the brute-force hot path and the leaf kernels the BVH traversals call directly,
+// written once over a vector type V (the ISA's vfloat) and compiled per ISA: included by
+// triangle_kernels_<isa>.cpp and bvh_traversal_<isa>.cpp inside namespace rayvec::<isa>, after
+// moller_trumbore.inl (whose ray lanes, step masks and reference kernels it uses). No std:: calls
+// here, as there.
+//
+// Möller–Trumbore rewritten with the scalar triple product identities in the form Embree's
+// Moeller intersector uses, over the precomputed normal ng = e2 × e1 and s = v0 − o, c = s × d:
+//   det = d · ng,  u·det = −(e2 · c),  v·det = e1 · c,  t·det = s · ng
+// — one cross product per ray and triangle instead of two (21 multiply/adds instead of 27). The sign
+// of det is folded into the three numerators (division-free, closed edge tests as before). The
+// depth test is split: a conservative division-free pre-test t·|det| < best·(1 + 2^-20)·|det|
+// (and >= tmin·(1 − 2^-20)·|det|) that every lane which could be nearer passes, then — only for
+// steps where a lane passed — the exact t = (t·|det|)/|det| and the exact tmin <= t < best test. So
+// the one correctly rounded division is kept, but almost no step pays for it, and u and v are only
+// divided once, for the final hit.
+
+template <class V>
+struct MtNumerators {
+  typename V::Mask mask;  // lanes passing the edge tests and the conservative depth pre-test
+  V un, vn, tn, adet;     // −u·|det| (<= 0 on a hit), v·|det|, t·|det| (>= 0), |det|
+};
+
+// Where the float `mt` arithmetic gets its triangle values: W consecutive triangles, one per lane
+// (brute force and the single-ray leaf kernel), or one triangle broadcast to every lane (the
+// ray-packet leaf kernel, packet_leaf.inl). `at(kRowV0 + a)` gives the lanes of that row, read from
+// the slot's v0x position `p` (every row of a block lies a fixed distance from it, triangle_soa.h:
+// one pointer live instead of twelve row pointers reloaded per step). Both go through
+// mt_numerators_core, so a ray gets bit-identical numerators whichever way the lanes are laid out;
+// the values are fetched where they are used, as before the split. `at.edge(kRowV2 + a, v0)` gives
+// the lanes of e2 (kRowV1 + a: e1), v − v0 by the fill's float subtraction, bit for bit
+// (triangle_soa.h); the packet kernel reads them from rows it subtracted once per leaf.
+template <class V>
+struct MtTriangleLanes {
+  const float* p;  // T.v0x + slot_offset(i)
+  RAYVEC_INLINE V operator()(uint32_t row) const { return V::load(p + row * kSlotBlock); }
+  RAYVEC_INLINE V edge(uint32_t row, V v0) const { return (*this)(row)-v0; }
+};
+template <class V>
+RAYVEC_INLINE MtTriangleLanes<V> mt_lanes(const TriangleArrays& T, uint32_t i) {
+  return {T.v0x + slot_offset(i)};
+}
+
+// The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` against the triangle lanes
+// `at` gives — un, vn, tn and |det| only (`mask` is left unset; mt_numerators_core and
+// mt_closest_step add their tests).
+template <class V, class At>
+RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const At& at, const RayLanes<V>& r) {
+  MtNumerators<V> out;
+  // s = v0 − o, c = s × d
+  const V v0x = at(kRowV0), v0y = at(kRowV0 + 1), v0z = at(kRowV0 + 2);
+  const V sx = v0x - r.ox, sy = v0y - r.oy, sz = v0z - r.oz;
+  const V cx = fmsub(sy, r.dz, sz * r.dy);
+  const V cy = fmsub(sz, r.dx, sx * r.dz);
+  const V cz = fmsub(sx, r.dy, sy * r.dx);
+  // det = d · ng
+  const V ngx = at(kRowNg), ngy = at(kRowNg + 1), ngz = at(kRowNg + 2);
+  const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
+  const V sign = sign_bit(det);
+  out.adet = abs(det);
+  // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
+  // one xor fewer than folding it)
+  // e2 = v2 − v0 and e1 = v1 − v0: the fill's float subtraction, bit for bit (triangle_soa.h)
+  const V e2x = at.edge(kRowV2, v0x), e2y = at.edge(kRowV2 + 1, v0y), e2z = at.edge(kRowV2 + 2, v0z);
+  out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), sign);
+  const V e1x = at.edge(kRowV1, v0x), e1y = at.edge(kRowV1 + 1, v0y), e1z = at.edge(kRowV1 + 2, v0z);
+  out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
+  out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
+  return out;
+}
+
+// The closed edge tests of numerators `c`: −u·|det| <= 0, v·|det| >= 0, (u + v)·|det| <= |det|;
+// ordered compares, so a NaN fails them.
+template <class V>
+RAYVEC_INLINE typename V::Mask mt_edges(const MtNumerators<V>& c) {
+  const V zero = V::broadcast(0.0f);
+  return (c.un <= zero) & (c.vn >= zero) & (c.vn - c.un <= c.adet);
+}
+
+// mt_numerator_values plus `mask` = the closed edge tests and the upper depth pre-test
+// tn < hi·|det|, but NOT the lower one (tmin), which the callers add (mt_numerators; the packet
+// kernel per lane). |det| = 0 fails the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN).
+template <class V, class At>
+RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const At& at, const RayLanes<V>& r, typename V::Mask active,
+                                                 V hi) {
+  MtNumerators<V> out = mt_numerator_values<V>(at, r);
+  out.mask = active & mt_edges(out) & (out.tn < hi * out.adet);
+  return out;
+}
+
+// The pre-test with ONE mask instruction (MtPretest::sign_bits; benchmarks.md#decision-sign-pretest): on
+// AMD's Zen 5 every instruction that writes a mask register competes with the 19 multiplies/FMAs of
+// a step for the same two pipes, while adds and bitwise ops have pipes of their own. So the five
+// tests are sign bits — u·|det| = 0 − un, v·|det| = vn + 0, (1 − u − v)·|det| = |det| − (u +
+// v)·|det|, t·|det| − lo·|det| (t·|det| + 0 for tmin = 0) and hi·|det| − t·|det| must all have a
+// clear sign (the +0 turns −0 into +0, so closed edges stay closed) — ORed and tested once.
+// Conservative: every lane passing the ordered tests (mt_edges, tmin <= t <= hi) passes it; NaN
+// lanes and |det| = 0 may pass too, so the caller must repeat the ordered tests on the rare steps
+// where a lane passes (mt_closest_step). neg_lo = −lo (unused when TminZero).
+template <class V, bool TminZero>
+RAYVEC_INLINE typename V::Mask mt_sign_pretest(const MtNumerators<V>& c, typename V::Mask active, V neg_lo,
+                                               V hi) {
+  const V zero = V::broadcast(0.0f);
+  const V u = zero - c.un, v = c.vn + zero;
+  const V w = c.adet - (u + v);
+  const V low = TminZero ? c.tn + zero : fmadd(neg_lo, c.adet, c.tn);
+  const V nearer = fmsub(hi, c.adet, c.tn);
+  return active & sign_clear(or3(or3(u, v, w), low, nearer));
+}
+
+// The same pre-test as ordered compares chained through the lane mask (MtPretest::ordered_compares;
+// on AVX-512 each compare writes a mask register under the one before): two instructions fewer
+// than the sign bits' normalising adds, ORs and test, faster where mask writes are not what limits
+// a step (benchmarks.md#decision-sign-pretest).
+// Conservative like mt_sign_pretest (tn < hi·|det| holds for every t <= best: hi is widened by
+// 2^-20), so the exact stage sees the same lanes; NaN and |det| = 0 already fail here.
+template <class V, bool TminZero>
+RAYVEC_INLINE typename V::Mask mt_ordered_pretest(const MtNumerators<V>& c, typename V::Mask active, V neg_lo,
+                                                  V hi) {
+  const V zero = V::broadcast(0.0f);
+  const typename V::Mask m = active & mt_edges(c) & (c.tn < hi * c.adet);
+  if constexpr (TminZero)
+    return m & (c.tn >= zero);
+  else
+    return m & (fmadd(neg_lo, c.adet, c.tn) >= zero);
+}
+
+template <class V, bool TminZero, MtPretest P>
+RAYVEC_INLINE typename V::Mask mt_pretest(const MtNumerators<V>& c, typename V::Mask active, V neg_lo, V hi) {
+  if constexpr (P == MtPretest::sign_bits)
+    return mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi);
+  else
+    return mt_ordered_pretest<V, TminZero>(c, active, neg_lo, hi);
+}
+
+template <class V, bool TminZero>
+RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
+                                            typename V::Mask active, V lo, V hi) {
+  MtNumerators<V> out = mt_numerators_core<V>(mt_lanes<V>(T, i), r, active, hi);
+  if constexpr (TminZero)
+    out.mask = out.mask & (out.tn >= V::broadcast(0.0f));  // no multiply for tmin = 0
+  else
+    out.mask = out.mask & (out.tn >= lo * out.adet);
+  return out;
+}
+
+// Widening factors of the pre-test: 2^-20 covers the float rounding of best·(1 + 2^-20)·|det| and
+// of t = tn/|det| (2^-24 each) with room to spare.
+inline constexpr float kMtWiden = 1.0f + 0x1p-20f, kMtNarrow = 1.0f - 0x1p-20f;
+
+// The pre-test's lower factor for tmin: every t >= tmin has tn >= lo·|det|.
+RAYVEC_INLINE float mt_lower(float tmin) {
+  if (tmin > 0.0f) return tmin * kMtNarrow;
+  return tmin == 0.0f ? 0.0f : -__builtin_inff();
+}
+
+// Per-lane best hit of closest_mt_float, plus the pre-test threshold `hi`, which is shared by all
+// lanes: the nearest t found so far in ANY lane, widened. A triangle behind the ray's nearest hit
+// can never win, whatever its lane, so sharing the threshold makes the exact stage (and its
+// mispredicted branch) run about log(hits) times per ray instead of that many times per lane.
+template <class V>
+struct MtBest {
+  V t, hi, un, vn, adet, idx;
+  bool found;
+};
+
+template <class V, bool TminZero, MtPretest P>
+RAYVEC_INLINE void mt_closest_step(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
+                                   typename V::Mask active, V neg_lo, MtBest<V>& b) {
+  const MtNumerators<V> c = mt_numerator_values<V>(mt_lanes<V>(T, i), r);
+  const typename V::Mask pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, b.hi);
+  if (!any(pre)) return;
+  // the ordered tests (NaN and |det| = 0 fail them) and the exact depth test, only for steps where
+  // a lane may be nearer; ties go to the lower id later
+  const V t = c.tn / c.adet;
+  const typename V::Mask m = pre & mt_edges(c) & (c.adet > V::broadcast(0.0f)) & (t >= r.tmin) & (t < b.t);
+  if (!any(m)) return;
+  b.t = select(m, b.t, t);
+  b.un = select(m, b.un, c.un);
+  b.vn = select(m, b.vn, c.vn);
+  b.adet = select(m, b.adet, c.adet);
+  b.idx = select(m, b.idx, V::index_bits(i));
+  b.hi = V::broadcast(hmin(b.t) * kMtWiden);
+  b.found = true;
+}
+
+// The winner among the lanes of `b` (nearest t, then lowest id) replaces `hit` if nearer; u and v
+// are divided once, here. The nearest t is one lane reduction; only when several lanes hold it
+// are their ids compared (lanes without a hit still hold `initial`, above every hit, and no lane
+// holds NaN: a t is kept only after ordered compares).
+template <class V>
+RAYVEC_INLINE void mt_finish(const TriangleArrays& T, const MtBest<V>& b, float initial, Hit& hit) {
+  constexpr int W = V::W;
+  if (!b.found) return;
+  const float t = hmin(b.t);
+  if (!(t < initial)) return;
+  float us[W], vs[W], as[W];
+  int64_t idx[W];
+  b.un.store(us);
+  b.vn.store(vs);
+  b.adet.store(as);
+  b.idx.store_index(idx);
+  unsigned nearest = bits(b.t <= V::broadcast(t));
+  int k_best = __builtin_ctz(nearest);
+  for (nearest &= nearest - 1; nearest != 0; nearest &= nearest - 1) {  // a tie: the lowest id
+    const int k = __builtin_ctz(nearest);
+    if (T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]) k_best = k;
+  }
+  const int32_t id = T.id[slot_offset(uint32_t(idx[k_best]))];
+  if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri)))
+    hit = Hit{t, (0.0f - us[k_best]) / as[k_best], vs[k_best] / as[k_best], id};  // 0 − un: no −0
+}
+
+// One ray's constants and running best.
+template <class V>
+struct MtRay {
+  RayLanes<V> r;
+  V lo;
+  float initial;  // lanes still at `initial` have no hit
+  MtBest<V> b;
+};
+
+template <class V>
+RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
+  const float limit = ray.tmax < hit.t ? ray.tmax : hit.t;
+  const float initial = next_up(limit);
+  const V zero = V::broadcast(0.0f);
+  return MtRay<V>{
+      broadcast_ray<V>(ray), V::broadcast(mt_lower(ray.tmin)), initial,
+      MtBest<V>{V::broadcast(initial), V::broadcast(initial * kMtWiden), zero, zero, zero, zero, false}};
+}
+
+// R rays (1 or 2) against [begin, end): each triangle step is loaded once for all R rays.
+template <class V, bool TminZero, int R, MtPretest P = MtPretest::sign_bits>
+void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
+                           Hit* hits) {
+  constexpr int W = V::W;
+  MtRay<V> q[R];
+  V neg_lo[R];  // −lo, for mt_sign_pretest's fused t·|det| − lo·|det|
+  for (int k = 0; k < R; ++k) {
+    q[k] = mt_ray<V>(rays[k], hits[k]);
+    neg_lo[k] = V::broadcast(0.0f) - q[k].lo;
+  }
+  // a head step if begin is not on a step, full steps without a lane mask, the partial last step
+  const typename V::Mask all = first_lanes(V{}, W);
+  uint32_t i = begin;
+  if (i % W != 0 && i < end) {
+    const uint32_t head = first_step(i, W);
+    for (int k = 0; k < R; ++k)
+      mt_closest_step<V, TminZero, P>(T, head, q[k].r, step_lanes<V>(head, begin, end), neg_lo[k], q[k].b);
+    i = head + W;
+  }
+  for (; end - i >= uint32_t(W) && i < end; i += W)
+    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(T, i, q[k].r, all, neg_lo[k], q[k].b);
+  if (i < end)
+    for (int k = 0; k < R; ++k)
+      mt_closest_step<V, TminZero, P>(T, i, q[k].r, first_lanes(V{}, end - i), neg_lo[k], q[k].b);
+  for (int k = 0; k < R; ++k) mt_finish<V>(T, q[k].b, q[k].initial, hits[k]);
+}
+
+// One ray against [begin, end), the winner kept as scalars: a step where a lane passes the exact
+// test is reduced at once (its nearest t by one hmin; of equal t its lowest lane, the lowest id, as
+// ids increase in a range), and later steps accept only t below it — a later step holds higher
+// ids, so a tie keeps the earlier hit. Same hit as closest_mt_float_rays (whose per-lane best
+// vectors are reduced at the end), but only the ray's lanes and the pre-test threshold stay live
+// across steps: the single-ray leaf then fits AVX2's 16 vector registers without spilling them.
+template <class V, bool TminZero, MtPretest P = MtPretest::sign_bits>
+void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+  constexpr uint32_t W = V::W;
+  const RayLanes<V> r = broadcast_ray<V>(ray);
+  const float limit = ray.tmax < hit.t ? ray.tmax : hit.t;
+  const float initial = next_up(limit);  // best while nothing is found: accepts t <= limit
+  float best = initial, un = 0.0f, vn = 0.0f, adet = 0.0f;
+  uint32_t winner = 0;
+  V hi = V::broadcast(initial * kMtWiden);
+  const V neg_lo = V::broadcast(0.0f) - V::broadcast(mt_lower(ray.tmin));
+  const auto step = [&](uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
+    const MtNumerators<V> c = mt_numerator_values<V>(mt_lanes<V>(T, i), r);
+    const typename V::Mask pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, hi);
+    if (!any(pre)) return;
+    const V t = c.tn / c.adet;
+    const typename V::Mask m =
+        pre & mt_edges(c) & (c.adet > V::broadcast(0.0f)) & (t >= r.tmin) & (t < V::broadcast(best));
+    if (!any(m)) return;
+    best = hmin(select(m, V::broadcast(__builtin_inff()), t));
+    const unsigned k = unsigned(__builtin_ctz(bits(m & (t <= V::broadcast(best)))));
+    alignas(64) float us[W], vs[W], as[W];
+    c.un.store(us);
+    c.vn.store(vs);
+    c.adet.store(as);
+    un = us[k];
+    vn = vs[k];
+    adet = as[k];
+    winner = i + k;
+    hi = V::broadcast(best * kMtWiden);
+  };
+  uint32_t i = begin;
+  if (i % W != 0 && i < end) {  // a head step if begin is not on a step
+    const uint32_t head = first_step(i, W);
+    step(head, step_lanes<V>(head, begin, end));
+    i = head + W;
+  }
+  for (; end - i >= W && i < end; i += W) step(i, first_lanes(V{}, W));
+  if (i < end) step(i, first_lanes(V{}, end - i));
+  if (!(best < initial)) return;
+  const int32_t id = T.id[slot_offset(winner)];
+  if (best < hit.t || (best == hit.t && (hit.tri < 0 || id < hit.tri)))
+    hit = Hit{best, (0.0f - un) / adet, vn / adet, id};  // 0 − un: no −0
+}
+
+// tmin = 0 (camera and most secondary rays) drops the multiply of the lower depth pre-test.
+template <class V, MtPretest P = MtPretest::sign_bits>
+void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+  if (!finite_ray(ray)) return;
+  if (ray.tmin == 0.0f)
+    closest_mt_float_one<V, true, P>(T, begin, end, ray, hit);
+  else
+    closest_mt_float_one<V, false, P>(T, begin, end, ray, hit);
+}
+
+template <class V, MtPretest P = MtPretest::sign_bits>
+void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
+                           Hit* hits) {
+  if (!finite_ray(rays[0]) || !finite_ray(rays[1])) {
+    closest_mt_float<V, P>(T, begin, end, rays[0], hits[0]);
+    closest_mt_float<V, P>(T, begin, end, rays[1], hits[1]);
+    return;
+  }
+  if (rays[0].tmin == 0.0f && rays[1].tmin == 0.0f)
+    closest_mt_float_rays<V, true, 2, P>(T, begin, end, rays, hits);
+  else
+    closest_mt_float_rays<V, false, 2, P>(T, begin, end, rays, hits);
+}
+
+// One ray's constants of the float `mt` any-hit kernel: its lanes, the pre-test's lower and upper
+// factors and the exact upper bound, formed once per ray — by each table call, or once per
+// traversal when a BVH unit calls the leaf kernel directly with these lanes in memory
+// (bvh/mt_any_hit_leaf.inl; benchmarks.md#decision-any-hit-leaf-lanes).
+template <class V>
+struct MtAnyHitRay {
+  RayLanes<V> r;
+  V lo, hi, tlimit;
+};
+
+template <class V>
+RAYVEC_INLINE MtAnyHitRay<V> mt_any_hit_ray(const Ray& ray) {
+  const float limit = next_up(ray.tmax);
+  return {broadcast_ray<V>(ray), V::broadcast(mt_lower(ray.tmin)), V::broadcast(limit * kMtWiden),
+          V::broadcast(limit)};
+}
+
+// Any hit of the ray `q` (finite origin and direction, no NaN interval) in [begin, end) accepted by
+// `filter` (may be null).
+template <class V>
+RAYVEC_INLINE bool occluded_mt_float_lanes(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                           const MtAnyHitRay<V>& q, const HitFilter* filter) {
+  for (uint32_t i = first_step(begin, V::W); i < end; i += V::W) {
+    const MtNumerators<V> c = mt_numerators<V, false>(T, i, q.r, step_lanes<V>(i, begin, end), q.lo, q.hi);
+    if (!any(c.mask)) continue;
+    const V t = c.tn / c.adet;
+    const typename V::Mask m = c.mask & (t >= q.r.tmin) & (t < q.tlimit);
+    if (!any(m)) continue;
+    if (!filter) return true;
+    for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
+      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))]))
+        return true;
+  }
+  return false;
+}
+
+template <class V>
+bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray,
+                       const HitFilter* filter) {
+  if (!finite_ray(ray)) return false;
+  return occluded_mt_float_lanes<V>(T, begin, end, mt_any_hit_ray<V>(ray), filter);
+}
+
+template <class V, Intersector I, MtPretest P = MtPretest::sign_bits>
+constexpr TriangleKernels make_kernels(Isa isa) {
+  if constexpr (I == Intersector::mt && sizeof(typename V::Scalar) == 4)
+    return TriangleKernels{
+        isa, I, V::W, &closest_mt_float<V, P>, &occluded_mt_float<V>, &closest_pair_mt_float<V, P>};
+  else
+    return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
+}
