@@ -45,7 +45,11 @@ struct LayoutStack {
 // of the wide BVH rely on; exact by dynamic programming over the offset, the only state one
 // subtree's layout passes to the next. Post-order without recursion (the tree may be deep); only
 // the layouts of the open path are alive.
-std::vector<uint64_t> second_child_first(const BinaryBvh& tree, uint32_t step) {
+struct ChildOrder {
+  std::vector<uint64_t> second_first;  // per node, bit o: lay out the second child first at offset o
+  uint32_t padding = 0;                // padding slots of the whole tree laid out from offset 0
+};
+ChildOrder second_child_first(const BinaryBvh& tree, uint32_t step) {
   std::vector<uint64_t> swap(tree.nodes.size(), 0);
   std::vector<std::pair<uint32_t, bool>> stack{{0, false}};
   LayoutStack done;  // layouts of finished subtrees whose parent is still open
@@ -81,18 +85,21 @@ std::vector<uint64_t> second_child_first(const BinaryBvh& tree, uint32_t step) {
     done.padding.resize(b);
     done.exit.resize(b);
   }
-  return swap;
+  return {std::move(swap), done.padding[0]};  // the root's layout, from offset 0
 }
 
 }  // namespace
 
 void align_leaves(BinaryBvh& tree, uint32_t step) {
   if (step <= 1 || tree.nodes.empty()) return;
-  const std::vector<uint64_t> swap =
-      step <= kMaxReorderStep ? second_child_first(tree, step) : std::vector<uint64_t>(tree.nodes.size(), 0);
+  const ChildOrder chosen = step <= kMaxReorderStep
+                                ? second_child_first(tree, step)
+                                : ChildOrder{std::vector<uint64_t>(tree.nodes.size(), 0), 0};
+  const std::vector<uint64_t>& swap = chosen.second_first;
   std::vector<uint32_t> order;
-  order.reserve(tree.order.size() + tree.order.size() / 2);
-  std::vector<uint32_t> stack{0};  // depth first, each node's children in the chosen order
+  order.reserve(tree.order.size() + chosen.padding);  // exact when the order was chosen
+  // depth first, each node's children in the chosen order
+  std::vector<uint32_t> stack{0};
   while (!stack.empty()) {
     const uint32_t k = stack.back();
     stack.pop_back();

@@ -156,6 +156,8 @@ TEST(LeafAlignment, PaddingIsTheLeastAnyOrderOfSiblingsGives) {
       align_leaves(tree, step);
       EXPECT_EQ(padding_slots(tree), least) << "seed " << seed << ", step " << step;
       EXPECT_EQ(leaf_contents(tree), leaf_contents(built));
+      // the chosen layout's padding is known before the copy: the order is allocated at its size
+      EXPECT_EQ(tree.order.capacity(), tree.order.size());
       improved += least < in_tree_order;
     }
   }
