@@ -1,15 +1,20 @@
 #!/usr/bin/env python3
 """Writes a closed, bumpy UV sphere as a Wavefront OBJ for `rayvec bench rays` (deterministic).
 
-    scripts/make_bumpy_sphere.py OUT.obj [--rings R] [--segments S]
+    scripts/make_bumpy_sphere.py OUT.obj [--rings R] [--segments S] [--scene OUT.json]
 
 Vertices: r = 1 + 0.05 sin(7θ) sin(9φ) + 0.02 sin(23θ + 1) cos(17φ) on a (R+1) × S grid of polar
 angle θ and azimuth φ, poles shared; 2·R·S − 2·S triangles. Defaults give the ~1M-triangle mesh of
 docs/benchmarks.md (R = 500, S = 1000: 998,000 triangles); --rings 32 --segments 64 gives the
 ~4k one (3,968 triangles). Coordinates are printed with 7 significant digits.
+--scene also writes a `rayvec render` scene of the sphere (camera, one point light, a diffuse
+material; 640x480): the 1M-triangle scene of docs/benchmarks.md's "Whole process", which
+scripts/scene_to_pov.py converts for POV-Ray like the scenes in scenes/.
 """
 import argparse
+import json
 import math
+import os
 
 
 def main():
@@ -17,6 +22,7 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--rings", type=int, default=500)
     ap.add_argument("--segments", type=int, default=1000)
+    ap.add_argument("--scene", help="also write a render scene of the sphere to this JSON file")
     a = ap.parse_args()
     R, S = a.rings, a.segments
     if R < 2 or S < 3:
@@ -46,6 +52,27 @@ def main():
         lines.append("f %d %d %d\n" % (south, at(R - 1, j), at(R - 1, j + 1)))
     with open(a.out, "w") as f:
         f.writelines(lines)
+    if a.scene:
+        write_scene(a.scene, a.out, R, S)
+
+
+def write_scene(path, obj, rings, segments):
+    obj_from_scene = os.path.relpath(os.path.abspath(obj), os.path.dirname(os.path.abspath(path)))
+    scene = {
+        "comment": "Bumpy sphere of %d triangles (make_bumpy_sphere.py --rings %d --segments %d) "
+                   "under one point light: the large scene of the whole-process comparison."
+                   % (2 * rings * segments - 2 * segments, rings, segments),
+        "camera": {"eye": [0, 0.8, 3.2], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov_y": 45,
+                   "width": 640, "height": 480},
+        "background": [0.05, 0.05, 0.08],
+        "lights": [{"type": "point", "position": [3, 4, 5], "intensity": [60, 60, 60]}],
+        "objects": [{"obj": obj_from_scene,
+                     "material": {"Kd": [0.8, 0.55, 0.3], "illum": 1}}],
+        "render": {"max_depth": 1, "spp": 1},
+    }
+    with open(path, "w") as f:  # one line per key, as the scenes in scenes/
+        f.write("{\n" + ",\n".join("  %s: %s" % (json.dumps(k), json.dumps(v)) for k, v in scene.items())
+                + "\n}\n")
 
 
 if __name__ == "__main__":
