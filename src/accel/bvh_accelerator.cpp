@@ -37,7 +37,7 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
   SahConfig sah = options.sah;
   if (options.leaves_from_kernel && kernels_->width >= 8) {
     sah.leaf_block = uint32_t(kernels_->width);
-    const int steps = default_leaf_steps(config.isa, mesh.size(), cpu_features().vendor);
+    const int steps = default_leaf_steps(config.isa, mesh.size());
     sah.max_leaf = std::min(uint32_t(steps) * sah.leaf_block, kMaxLeafTriangles);
   }
   BinaryBvh binary = build_binned_sah(mesh, sah);

@@ -16,7 +16,7 @@ struct BvhOptions {
   SahConfig sah;
   // Size leaves to the triangle kernel (benchmarks.md#decision-leaf-size): SAH leaf cost per
   // kernel-width block of triangles and up to default_leaf_steps blocks per leaf (AVX-512: 16 and
-  // 32, AVX2: 8 and 16; one block for Intel's small meshes; scalar keeps sah's 4 and 8). false: use
+  // 32, AVX2: 8 and 16; one block for small meshes; scalar keeps sah's 4 and 8). false: use
   // sah.max_leaf and sah.leaf_block as given.
   bool leaves_from_kernel = true;
   int width = 0;  // children per node: 0 = default_bvh_width(isa, triangles)

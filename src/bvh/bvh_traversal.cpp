@@ -25,8 +25,8 @@ int default_bvh_width(Isa isa, std::size_t triangles) {
   return default_bvh_width(isa, triangles, cpu_features().vendor);
 }
 
-int default_leaf_steps(Isa isa, std::size_t triangles, std::string_view vendor) {
-  return isa != Isa::scalar && triangles < kWideNodeTriangles && vendor == "GenuineIntel" ? 1 : 2;
+int default_leaf_steps(Isa isa, std::size_t triangles) {
+  return isa != Isa::scalar && triangles < kWideNodeTriangles ? 1 : 2;
 }
 
 bool default_direct_leaf(Isa isa, std::string_view vendor, Intersector intersector) {

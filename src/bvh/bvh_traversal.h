@@ -50,11 +50,10 @@ int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
 int default_bvh_width(Isa isa, std::size_t triangles);
 
 // How many kernel steps (blocks of the kernel's width) a leaf of the binned SAH over `triangles`
-// triangles may hold by default on a CPU whose cpuid vendor is `vendor`: one for the SIMD ISAs on
-// Intel below kWideNodeTriangles (small meshes: shadow rays and packets +5–13 % there), two
-// otherwise — large meshes lost or broke even with one (benchmarks.md#decision-leaf-size; not
-// measured on AMD, which keeps two).
-int default_leaf_steps(Isa isa, std::size_t triangles, std::string_view vendor);
+// triangles may hold by default: one for the SIMD ISAs below kWideNodeTriangles (small meshes:
+// packets and shadow rays gain up to 18 % on Intel and AMD alike, incoherent rays lose up to 6 %),
+// two otherwise — large meshes lost or broke even with one (benchmarks.md#decision-leaf-size).
+int default_leaf_steps(Isa isa, std::size_t triangles);
 
 // Whether the traversals call the float leaf kernel of `intersector` directly instead of through
 // the kernel table, on a CPU whose cpuid vendor is `vendor`. `mt`: AVX2 everywhere and AVX-512 on
