@@ -10,6 +10,7 @@ packages=(build-essential cmake pkg-config
           libtinyobjloader-dev libfast-float-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
           libglm-dev nlohmann-json3-dev libcli11-dev
           libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev clang-format
+          python3             # scripts/*.py, and the test that runs the benchmark scene's script
           assimp-testmodels)  # real-world OBJ/MTL files for tests/scene and tests/render (skipped without)
 for flag in "$@"; do
   case "$flag" in
