@@ -21,8 +21,7 @@ bool traceable(const Ray& r) {
 // have a direct form.
 bool direct_leaf(const TraceConfig& config, const BvhOptions& options) {
   if (config.intersector != Intersector::mt && config.intersector != Intersector::watertight) return false;
-  if (options.direct_leaf < 0)
-    return default_direct_leaf(config.isa, cpu_features().vendor, config.intersector);
+  if (options.direct_leaf < 0) return default_direct_leaf(config.isa, config.intersector);
   return options.direct_leaf != 0;
 }
 

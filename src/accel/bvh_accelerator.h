@@ -26,7 +26,7 @@ struct BvhOptions {
   int merge_steps = 3;
   float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
   // The traversals call the float `mt` or `watertight` leaf kernel directly (1) or through the
-  // kernel table (0); −1 = default_direct_leaf(isa, this CPU's vendor, intersector). Other
+  // kernel table (0); −1 = default_direct_leaf(isa, intersector). Other
   // intersectors always use the table. Same results either way.
   int direct_leaf = -1;
 };

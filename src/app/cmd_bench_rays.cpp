@@ -303,7 +303,7 @@ void register_bench_rays_command(Command& bench) {
               "references (0 = none; default 0.3)")
       .option("--direct-leaf", o.direct_leaf,
               "tuning: closest-hit traversal calls the mt leaf kernel directly (1) or through the "
-              "kernel table (0); -1 = default (directly on AVX2 and on Intel's AVX-512)");
+              "kernel table (0); -1 = default (directly on AVX2 and AVX-512)");
   add_trace_options(cmd, o.trace, false);
   cmd.footer(
       "Ray sets (exact definitions in src/bench/ray_sets.h): primary = a pinhole camera framing the\n"

@@ -29,16 +29,12 @@ int default_leaf_steps(Isa isa, std::size_t triangles) {
   return isa != Isa::scalar && triangles < kWideNodeTriangles ? 1 : 2;
 }
 
-bool default_direct_leaf(Isa isa, std::string_view vendor, Intersector intersector) {
-  switch (intersector) {
-    case Intersector::mt: return isa == Isa::avx2 || (isa == Isa::avx512 && vendor == "GenuineIntel");
-    case Intersector::watertight: return isa != Isa::scalar;
-    default: return false;
-  }
+bool default_direct_leaf(Isa isa, Intersector intersector) {
+  return isa != Isa::scalar && (intersector == Intersector::mt || intersector == Intersector::watertight);
 }
 
 const BvhTraversal& bvh_traversal(Isa isa, int width, Intersector intersector) {
-  return bvh_traversal(isa, width, default_direct_leaf(isa, cpu_features().vendor, intersector), intersector);
+  return bvh_traversal(isa, width, default_direct_leaf(isa, intersector), intersector);
 }
 
 const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf, Intersector intersector) {

@@ -56,19 +56,18 @@ int default_bvh_width(Isa isa, std::size_t triangles);
 int default_leaf_steps(Isa isa, std::size_t triangles);
 
 // Whether the traversals call the float leaf kernel of `intersector` directly instead of through
-// the kernel table, on a CPU whose cpuid vendor is `vendor`. `mt`: AVX2 everywhere and AVX-512 on
-// Intel, where the closest-hit traversal then saves the save and reload of its ray registers around
-// every leaf call; on AMD's AVX-512 it measured slower (benchmarks.md#decision-direct-leaf-call). On
-// AVX2 the any-hit traversal then calls its leaf kernel directly too, with the ray's lanes formed
-// once per ray (benchmarks.md#decision-any-hit-leaf-lanes); AVX-512's any-hit traversal always does.
-// `watertight`: on AVX2 and AVX-512, both traversals, the ray's shear formed once per ray
-// (bvh/watertight_leaf.inl; benchmarks.md#decision-watertight-leaf). Other intersectors and the scalar ISA:
-// the table. Same results either way.
-bool default_direct_leaf(Isa isa, std::string_view vendor, Intersector intersector = Intersector::mt);
+// the kernel table. `mt`: on AVX2 and AVX-512, where the closest-hit traversal then saves the save
+// and reload of its ray registers around every leaf call (single rays 1–3 % faster on Intel and AMD:
+// benchmarks.md#decision-direct-leaf-call). On AVX2 the any-hit traversal then calls its leaf kernel
+// directly too, with the ray's lanes formed once per ray (benchmarks.md#decision-any-hit-leaf-lanes);
+// AVX-512's any-hit traversal always does. `watertight`: on AVX2 and AVX-512, both traversals, the
+// ray's shear formed once per ray (bvh/watertight_leaf.inl; benchmarks.md#decision-watertight-leaf).
+// Other intersectors and the scalar ISA: the table. Same results either way.
+bool default_direct_leaf(Isa isa, Intersector intersector = Intersector::mt);
 
 // The table for (isa, width), with the direct leaf calls of `intersector` where `direct_leaf` and
 // the ISA has them; the ISA must be supported and the width one of bvh_widths(isa). The form
-// without `direct_leaf` uses default_direct_leaf for this CPU.
+// without `direct_leaf` uses default_direct_leaf.
 const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf,
                                   Intersector intersector = Intersector::mt);
 const BvhTraversal& bvh_traversal(Isa isa, int width, Intersector intersector = Intersector::mt);

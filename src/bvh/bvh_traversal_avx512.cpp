@@ -27,9 +27,9 @@ namespace {
 // no call through the table, so the traversal's ray registers are not saved around it) when the
 // table is that kernel's; other tables through the table. The rays reaching a leaf are finite
 // (bvh.cpp rejects the others), so skipping the table entry's finite_ray test changes nothing.
-// Any hit: MtAnyHitLeaf (bvh/mt_any_hit_leaf.inl) in every table, whatever the closest-hit choice,
-// which depends on the vendor while the once-per-ray any-hit setup gained on AMD's AVX-512 as on
-// AVX2 (benchmarks.md#decision-any-hit-leaf-lanes).
+// Any hit: MtAnyHitLeaf (bvh/mt_any_hit_leaf.inl) in every table, whatever the closest-hit choice
+// (the once-per-ray any-hit setup gained on AVX-512 as on AVX2:
+// benchmarks.md#decision-any-hit-leaf-lanes).
 struct DirectMtLeaf {
   struct Closest : LeafRay {
     using LeafRay::LeafRay;

@@ -140,23 +140,15 @@ TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
   EXPECT_EQ(b.traversal().direct_leaf, has_direct);
 }
 
-TEST(BvhTraversalRule, DirectLeafCallOnAvx2AndIntelAvx512) {
-  EXPECT_TRUE(default_direct_leaf(Isa::avx512, "GenuineIntel"));
-  for (const char* other : {"AuthenticAMD", "HygonGenuine", ""})
-    EXPECT_FALSE(default_direct_leaf(Isa::avx512, other));
-  for (const char* vendor : {"GenuineIntel", "AuthenticAMD", ""}) {
-    EXPECT_TRUE(default_direct_leaf(Isa::avx2, vendor));
-    EXPECT_FALSE(default_direct_leaf(Isa::scalar, vendor));
+TEST(BvhTraversalRule, MtAndWatertightLeavesCalledDirectlyOnAvx2AndAvx512) {
+  for (const Intersector direct : {Intersector::mt, Intersector::watertight}) {
+    EXPECT_TRUE(default_direct_leaf(Isa::avx512, direct));
+    EXPECT_TRUE(default_direct_leaf(Isa::avx2, direct));
+    EXPECT_FALSE(default_direct_leaf(Isa::scalar, direct));
   }
-}
-
-TEST(BvhTraversalRule, WatertightLeavesCalledDirectlyOnAvx2AndAvx512) {
-  for (const char* vendor : {"GenuineIntel", "AuthenticAMD", ""}) {
-    EXPECT_TRUE(default_direct_leaf(Isa::avx512, vendor, Intersector::watertight));
-    EXPECT_TRUE(default_direct_leaf(Isa::avx2, vendor, Intersector::watertight));
-    EXPECT_FALSE(default_direct_leaf(Isa::scalar, vendor, Intersector::watertight));
-    for (const Intersector other : {Intersector::paper, Intersector::mt64, Intersector::watertight64})
-      EXPECT_FALSE(default_direct_leaf(Isa::avx512, vendor, other));
+  for (const Intersector other : {Intersector::paper, Intersector::mt64, Intersector::watertight64}) {
+    EXPECT_FALSE(default_direct_leaf(Isa::avx512, other));
+    EXPECT_FALSE(default_direct_leaf(Isa::avx2, other));
   }
 }
 
