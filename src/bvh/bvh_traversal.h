@@ -56,13 +56,14 @@ int default_bvh_width(Isa isa, std::size_t triangles);
 int default_leaf_steps(Isa isa, std::size_t triangles);
 
 // Whether the traversals call the float leaf kernel of `intersector` directly instead of through
-// the kernel table. `mt`: on AVX2 and AVX-512, where the closest-hit traversal then saves the save
-// and reload of its ray registers around every leaf call (single rays 1–3 % faster on Intel and AMD:
-// benchmarks.md#decision-direct-leaf-call). On AVX2 the any-hit traversal then calls its leaf kernel
-// directly too, with the ray's lanes formed once per ray (benchmarks.md#decision-any-hit-leaf-lanes);
-// AVX-512's any-hit traversal always does. `watertight`: on AVX2 and AVX-512, both traversals, the
-// ray's shear formed once per ray (bvh/watertight_leaf.inl; benchmarks.md#decision-watertight-leaf).
-// Other intersectors and the scalar ISA: the table. Same results either way.
+// the kernel table. `mt`: on AVX2 and AVX-512, where the closest-hit traversal then keeps its ray
+// registers instead of saving and reloading them around every leaf call (single rays faster on
+// Intel and AMD alike: benchmarks.md#decision-direct-leaf-call). On AVX2 the any-hit traversal then calls its
+// leaf kernel directly too, with the ray's lanes formed once per ray
+// (benchmarks.md#decision-any-hit-leaf-lanes); AVX-512's any-hit traversal always does. `watertight`: on AVX2
+// and AVX-512, both traversals, the ray's shear formed once per ray (bvh/watertight_leaf.inl;
+// benchmarks.md#decision-watertight-leaf). Other intersectors and the scalar ISA: the table. Same results
+// either way.
 bool default_direct_leaf(Isa isa, Intersector intersector = Intersector::mt);
 
 // The table for (isa, width), with the direct leaf calls of `intersector` where `direct_leaf` and
