@@ -1,18 +1,40 @@
-// `rayvec info`: what this CPU offers, which ISA rayvec picks, threads, library versions, CUDA.
+// `rayvec info`: what this CPU offers, which ISA rayvec picks and what it chooses for it (kernel
+// pre-test, BVH shape), threads, library versions, CUDA.
 #include <omp.h>
 
 #include <cstdio>
+#include <string_view>
 
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/device_option.h"
 #include "platform/isa.h"
 #include "kernels/triangle_kernels.h"
+#include "bvh/binary_bvh.h"
+#include "bvh/bvh_traversal.h"
 
 namespace rayvec {
+namespace {
+
+// The BVH shape `rayvec` builds by default with `isa` on a CPU of `vendor`, below and from the size
+// at which the defaults change (bvh_traversal.h), so a benchmark row can be traced to its tree.
+void print_bvh_defaults(Isa isa, std::string_view vendor) {
+  const std::size_t small = kWideNodeTriangles - 1, large = kWideNodeTriangles;
+  if (isa == Isa::scalar) {  // leaves sized by the builder's defaults, not by a kernel step
+    std::printf("          bvh: %d-wide nodes, leaves of up to %u triangles\n",
+                default_bvh_width(isa, small, vendor), SahConfig{}.max_leaf);
+    return;
+  }
+  std::printf(
+      "          bvh: %d-wide nodes and %d-step leaves below %zu triangles, %d-wide and %d-step from there\n",
+      default_bvh_width(isa, small, vendor), default_leaf_steps(isa, small), large,
+      default_bvh_width(isa, large, vendor), default_leaf_steps(isa, large));
+}
+
+}  // namespace
 
 void register_info_command(CommandLine& cli) {
-  cli.command("info", "Show CPU features, the ISA rayvec picks, threads and library versions").run([] {
+  cli.command("info", "Show CPU features, the ISA rayvec picks and its defaults, threads, versions").run([] {
     const CpuFeatures& f = cpu_features();
     std::printf("rayvec %s\n", RAYVEC_VERSION);
     std::printf("cpu: %s (%s)\n", f.brand.c_str(), f.vendor.c_str());
@@ -29,6 +51,7 @@ void register_info_command(CommandLine& cli) {
         std::printf(", %d floats per step, mt pre-test: %s", triangle_kernels(isa, Intersector::mt).width,
                     mt_pretest_name(default_mt_pretest(isa, f.vendor)));
       std::printf("\n");
+      if (ok) print_bvh_defaults(isa, f.vendor);
     }
     std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
     std::printf("compiler: g++ %s, OpenMP %d\n", __VERSION__, _OPENMP);

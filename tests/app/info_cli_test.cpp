@@ -1,9 +1,13 @@
-// `rayvec info` names, for every ISA this CPU supports, the choices rayvec makes by CPU vendor, so a
-// benchmark row can be traced to the kernels that produced it.
+// `rayvec info` names, for every ISA this CPU supports, the choices rayvec makes for it (the kernels'
+// pre-test by CPU vendor, the BVH's node width and leaf size by mesh size), so a benchmark row can be
+// traced to the kernels and the tree that produced it.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
+#include <string_view>
 
+#include "bvh/bvh_traversal.h"
 #include "kernels/triangle_kernels.h"
 #include "platform/isa.h"
 #include "test_support.h"
@@ -25,6 +29,29 @@ TEST(InfoCli, NamesTheMtPretestOfEverySupportedIsa) {
     }
     const std::string pretest = mt_pretest_name(default_mt_pretest(isa, cpu_features().vendor));
     EXPECT_NE(line.find("mt pre-test: " + pretest), std::string::npos) << line;
+  }
+}
+
+TEST(InfoCli, NamesTheBvhShapeOfEverySupportedSimdIsa) {
+  const auto r = test::run_cli("info");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string_view vendor = cpu_features().vendor;
+  for (Isa isa : {Isa::avx2, Isa::avx512}) {
+    if (!isa_supported(isa)) {
+      std::printf("skipped ISA %s: not on this CPU\n", isa_name(isa));
+      continue;
+    }
+    const std::size_t at = r.out.find(std::string("  ") + isa_name(isa) + " ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const std::size_t bvh = r.out.find('\n', at) + 1;  // the line after the ISA's
+    const std::string line = r.out.substr(bvh, r.out.find('\n', bvh) - bvh);
+    const std::string expected =
+        "bvh: " + std::to_string(default_bvh_width(isa, kWideNodeTriangles - 1, vendor)) +
+        "-wide nodes and " + std::to_string(default_leaf_steps(isa, kWideNodeTriangles - 1)) +
+        "-step leaves below " + std::to_string(kWideNodeTriangles) + " triangles, " +
+        std::to_string(default_bvh_width(isa, kWideNodeTriangles, vendor)) + "-wide and " +
+        std::to_string(default_leaf_steps(isa, kWideNodeTriangles)) + "-step from there";
+    EXPECT_NE(line.find(expected), std::string::npos) << line << "\nexpected: " << expected;
   }
 }
 
