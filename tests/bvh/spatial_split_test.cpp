@@ -86,7 +86,9 @@ TEST(SpatialSplitter, ClippedPartsHoldEveryPointOnTheirSide) {
       EXPECT_LE(left.hi[axis], at);
       EXPECT_EQ(left.id, t);
     }
-    if (has_right) EXPECT_GE(right.lo[axis], at);
+    if (has_right) {
+      EXPECT_GE(right.lo[axis], at);
+    }
     for (const BuildPrim* side : {&left, &right})
       for (int c = 0; c < 3; ++c) {  // inside the clipped reference
         if (!(side == &left ? has_left : has_right)) continue;
@@ -110,8 +112,12 @@ TEST(SpatialSplitter, ClippedPartsHoldEveryPointOnTheirSide) {
     splitter.clip(left, b, at2, ll, lr, has_ll, has_lr);
     for (const Point& q : samples(mesh, t, rng, 200)) {
       if (q.p[axis] > double(at)) continue;
-      if (q.p[b] <= double(at2)) ASSERT_TRUE(has_ll && inside(q, ll.lo, ll.hi)) << "triangle " << t;
-      if (q.p[b] >= double(at2)) ASSERT_TRUE(has_lr && inside(q, lr.lo, lr.hi)) << "triangle " << t;
+      if (q.p[b] <= double(at2)) {
+        ASSERT_TRUE(has_ll && inside(q, ll.lo, ll.hi)) << "triangle " << t;
+      }
+      if (q.p[b] >= double(at2)) {
+        ASSERT_TRUE(has_lr && inside(q, lr.lo, lr.hi)) << "triangle " << t;
+      }
     }
   }
   EXPECT_GT(both, 200) << "the planes should cut most triangles";
@@ -141,7 +147,9 @@ void expect_covered(const TriangleMesh& mesh, const BinaryBvh& tree) {
     const BinaryNode& n = tree.nodes[k];
     if (!n.leaf()) continue;
     for (uint32_t s = n.first; s < n.first + n.count; ++s) {
-      if (s > n.first) EXPECT_LT(tree.order[s - 1], tree.order[s]) << "ids increase inside a leaf";
+      if (s > n.first) {
+        EXPECT_LT(tree.order[s - 1], tree.order[s]) << "ids increase inside a leaf";
+      }
       leaves_of[tree.order[s]].push_back(k);
     }
   }
