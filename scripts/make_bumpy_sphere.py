@@ -53,15 +53,15 @@ def main():
     with open(a.out, "w") as f:
         f.writelines(lines)
     if a.scene:
-        write_scene(a.scene, a.out, R, S)
+        write_scene(a.scene, a.out, R, S, sum(1 for line in lines if line.startswith("f ")))
 
 
-def write_scene(path, obj, rings, segments):
+def write_scene(path, obj, rings, segments, triangles):
     obj_from_scene = os.path.relpath(os.path.abspath(obj), os.path.dirname(os.path.abspath(path)))
     scene = {
         "comment": "Bumpy sphere of %d triangles (make_bumpy_sphere.py --rings %d --segments %d) "
                    "under one point light: the large scene of the whole-process comparison."
-                   % (2 * rings * segments - 2 * segments, rings, segments),
+                   % (triangles, rings, segments),
         "camera": {"eye": [0, 0.8, 3.2], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov_y": 45,
                    "width": 640, "height": 480},
         "background": [0.05, 0.05, 0.08],

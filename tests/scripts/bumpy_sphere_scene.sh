@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The large scene of docs/benchmarks.md's whole-process comparison is made by its own command:
-# make_bumpy_sphere.py --scene writes a scene that `rayvec render` renders (every pixel the sphere
-# covers lit, the rest background) and that scene_to_pov.py converts for POV-Ray.
+# make_bumpy_sphere.py --scene writes a scene that `rayvec render` renders (the sphere in part of the
+# picture, background around it) and that scene_to_pov.py converts for POV-Ray.
 # Usage: bumpy_sphere_scene.sh REPOSITORY_ROOT RAYVEC
 set -euo pipefail
 root="$1"
