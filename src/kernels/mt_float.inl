@@ -41,6 +41,17 @@ RAYVEC_INLINE MtTriangleLanes<V> mt_lanes(const TriangleArrays& T, uint32_t i) {
   return {T.v0x + slot_offset(i)};
 }
 
+// The v0x position of the step after the W-aligned step at slot i, whose position is p: the next W
+// slots of the block, or the first slots of the next block. The loops carry it instead of
+// recomputing slot_offset (a division, a remainder and a multiply a step): on AVX-512 one add.
+template <class V>
+RAYVEC_INLINE const float* next_step(const float* p, uint32_t i) {
+  if constexpr (V::W == kSlotBlock)
+    return p + kSlotBlockFloats;
+  else
+    return (i + V::W) % kSlotBlock == 0 ? p + (kSlotBlockFloats - kSlotBlock + V::W) : p + V::W;
+}
+
 // The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` against the triangle lanes
 // `at` gives — un, vn, tn and |det| only (`mask` is left unset; mt_numerators_core and
 // mt_closest_step add their tests).
@@ -56,16 +67,15 @@ RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const At& at, const RayLanes<V
   // det = d · ng
   const V ngx = at(kRowNg), ngy = at(kRowNg + 1), ngz = at(kRowNg + 2);
   const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
-  const V sign = sign_bit(det);
   out.adet = abs(det);
   // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
   // one xor fewer than folding it)
   // e2 = v2 − v0 and e1 = v1 − v0: the fill's float subtraction, bit for bit (triangle_soa.h)
   const V e2x = at.edge(kRowV2, v0x), e2y = at.edge(kRowV2 + 1, v0y), e2z = at.edge(kRowV2 + 2, v0z);
-  out.un = xor_bits(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), sign);
+  out.un = xor_sign(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), det);
   const V e1x = at.edge(kRowV1, v0x), e1y = at.edge(kRowV1 + 1, v0y), e1z = at.edge(kRowV1 + 2, v0z);
-  out.vn = xor_bits(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), sign);
-  out.tn = xor_bits(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), sign);
+  out.vn = xor_sign(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), det);
+  out.tn = xor_sign(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), det);
   return out;
 }
 
@@ -164,10 +174,11 @@ struct MtBest {
   bool found;
 };
 
+// The step at slot i, whose v0x position is p (mt_lanes).
 template <class V, bool TminZero, MtPretest P>
-RAYVEC_INLINE void mt_closest_step(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
-                                   typename V::Mask active, V neg_lo, MtBest<V>& b) {
-  const MtNumerators<V> c = mt_numerator_values<V>(mt_lanes<V>(T, i), r);
+RAYVEC_INLINE void mt_closest_step(const float* p, uint32_t i, const RayLanes<V>& r, typename V::Mask active,
+                                   V neg_lo, MtBest<V>& b) {
+  const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleLanes<V>{p}, r);
   const typename V::Mask pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, b.hi);
   if (!any(pre)) return;
   // the ordered tests (NaN and |det| = 0 fail them) and the exact depth test, only for steps where
@@ -246,15 +257,17 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
   uint32_t i = begin;
   if (i % W != 0 && i < end) {
     const uint32_t head = first_step(i, W);
+    const float* p = T.v0x + slot_offset(head);
     for (int k = 0; k < R; ++k)
-      mt_closest_step<V, TminZero, P>(T, head, q[k].r, step_lanes<V>(head, begin, end), neg_lo[k], q[k].b);
+      mt_closest_step<V, TminZero, P>(p, head, q[k].r, step_lanes<V>(head, begin, end), neg_lo[k], q[k].b);
     i = head + W;
   }
-  for (; end - i >= uint32_t(W) && i < end; i += W)
-    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(T, i, q[k].r, all, neg_lo[k], q[k].b);
+  const float* p = T.v0x + slot_offset(i);
+  for (; end - i >= uint32_t(W) && i < end; p = next_step<V>(p, i), i += W)
+    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(p, i, q[k].r, all, neg_lo[k], q[k].b);
   if (i < end)
     for (int k = 0; k < R; ++k)
-      mt_closest_step<V, TminZero, P>(T, i, q[k].r, first_lanes(V{}, end - i), neg_lo[k], q[k].b);
+      mt_closest_step<V, TminZero, P>(p, i, q[k].r, first_lanes(V{}, end - i), neg_lo[k], q[k].b);
   for (int k = 0; k < R; ++k) mt_finish<V>(T, q[k].b, q[k].initial, hits[k]);
 }
 
@@ -274,8 +287,8 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
   uint32_t winner = 0;
   V hi = V::broadcast(initial * kMtWiden);
   const V neg_lo = V::broadcast(0.0f) - V::broadcast(mt_lower(ray.tmin));
-  const auto step = [&](uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
-    const MtNumerators<V> c = mt_numerator_values<V>(mt_lanes<V>(T, i), r);
+  const auto step = [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
+    const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleLanes<V>{p}, r);
     const typename V::Mask pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, hi);
     if (!any(pre)) return;
     const V t = c.tn / c.adet;
@@ -297,11 +310,12 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
   uint32_t i = begin;
   if (i % W != 0 && i < end) {  // a head step if begin is not on a step
     const uint32_t head = first_step(i, W);
-    step(head, step_lanes<V>(head, begin, end));
+    step(T.v0x + slot_offset(head), head, step_lanes<V>(head, begin, end));
     i = head + W;
   }
-  for (; end - i >= W && i < end; i += W) step(i, first_lanes(V{}, W));
-  if (i < end) step(i, first_lanes(V{}, end - i));
+  const float* p = T.v0x + slot_offset(i);
+  for (; end - i >= W && i < end; p = next_step<V>(p, i), i += W) step(p, i, first_lanes(V{}, W));
+  if (i < end) step(p, i, first_lanes(V{}, end - i));
   if (!(best < initial)) return;
   const int32_t id = T.id[slot_offset(winner)];
   if (best < hit.t || (best == hit.t && (hit.tri < 0 || id < hit.tri)))

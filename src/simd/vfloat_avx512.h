@@ -74,6 +74,12 @@ RAYVEC_INLINE vfloat sign_bit(vfloat a) {
 RAYVEC_INLINE vfloat xor_bits(vfloat a, vfloat b) {
   return {_mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(a.v), _mm512_castps_si512(b.v)))};
 }
+// a with its sign flipped in the lanes where s is negative: a ^ (s & sign bit) in one instruction
+// (0x78 = A ^ (B & C)), where sign_bit and xor_bits would take two.
+RAYVEC_INLINE vfloat xor_sign(vfloat a, vfloat s) {
+  return {_mm512_castsi512_ps(_mm512_ternarylogic_epi32(_mm512_castps_si512(a.v), _mm512_castps_si512(s.v),
+                                                        _mm512_set1_epi32(INT32_MIN), 0x78))};
+}
 RAYVEC_INLINE vdouble operator+(vdouble a, vdouble b) { return {_mm512_add_pd(a.v, b.v)}; }
 RAYVEC_INLINE vdouble operator-(vdouble a, vdouble b) { return {_mm512_sub_pd(a.v, b.v)}; }
 RAYVEC_INLINE vdouble operator*(vdouble a, vdouble b) { return {_mm512_mul_pd(a.v, b.v)}; }
