@@ -11,6 +11,7 @@ packages=(build-essential cmake pkg-config
           libglm-dev nlohmann-json3-dev libcli11-dev
           libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev clang-format
           python3             # scripts/*.py, and the test that runs the benchmark scene's script
+          llvm                # llvm-mca: scripts/port_model.py and the test of the kernel loop's length
           assimp-testmodels)  # real-world OBJ/MTL files for tests/scene and tests/render (skipped without)
 for flag in "$@"; do
   case "$flag" in

@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""What a CPU model says the brute-force kernel's inner loop costs: a host of one vendor estimates
+another's throughput (llvm-mca's port model) where it cannot run there.
+
+    scripts/port_model.py [--rays 1|2] [--pretest ordered|sign] [--cpu NAME ...] [--max-cycles C] [OBJECT ...]
+
+Disassembles the AVX-512 `closest_mt_float_rays` kernel (tmin = 0) of a built tree, follows its
+triangle loop along the path a step takes when no lane passes the pre-test (every early-out taken:
+the path almost every step takes), and runs that straight-line body through `llvm-mca` for each
+--cpu (default: icelake-server, the model closest to the Xeons' Golden Cove cores in LLVM 14, and
+skylake-avx512). Prints cycles per loop iteration, the busiest ports and tests per cycle (16 tests
+per ray and iteration). A model, not a measurement: it ignores caches, frequency and the
+front end; docs/benchmarks.md quotes it beside what the same loop measured. OBJECT: the AVX-512 kernel
+unit's object file(s) (default: the one of build/); the first that defines the kernel is read.
+--max-cycles C exits 1 when the first --cpu's cycles an iteration exceed C (the test that guards the
+loop's length); exit 77 when llvm-mca is missing (Debian: llvm).
+"""
+import argparse
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+DEFAULT_OBJECT = "build/src/CMakeFiles/rayvec_core_avx512.dir/kernels/triangle_kernels_avx512.cpp.o"
+PRETEST = {"sign": 0, "ordered": 1}
+
+
+def symbol(rays, pretest):
+    """closest_mt_float_rays<vfloat, true, 2, P> (pairs) or closest_mt_float_one<vfloat, true, P>."""
+    if rays == 2:
+        return (f"_ZN6rayvec6avx51221closest_mt_float_raysINS0_6vfloatELb1ELi2ELNS_9MtPretestE"
+                f"{PRETEST[pretest]}EEEvRKNS_14TriangleArraysEjjPKNS_3RayEPNS_3HitE")
+    return (f"_ZN6rayvec6avx51220closest_mt_float_oneINS0_6vfloatELb1ELNS_9MtPretestE"
+            f"{PRETEST[pretest]}EEEvRKNS_14TriangleArraysEjjRKNS_3RayERNS_3HitE")
+
+
+def instructions(objects, sym):
+    for obj in objects:
+        out = subprocess.run(["objdump", "-d", "--no-show-raw-insn", "-M", "intel", f"--disassemble={sym}", obj],
+                             check=True, capture_output=True, text=True).stdout
+        code = disassembly(out)
+        if code:
+            return code
+    sys.exit(f"port_model: {sym} not found in {' '.join(objects)} (build the tree first)")
+
+
+def disassembly(out):
+    code = []
+    for line in out.splitlines():
+        m = re.match(r"\s*([0-9a-f]+):\t(.*)$", line)
+        if m:
+            text = re.sub(r"\s*(<[^>]*>|#.*)$", "", m.group(2)).strip()
+            code.append((int(m.group(1), 16), text))
+    return code
+
+
+def loop_body(code, rays):
+    """The loop's straight-line path with every branch after a mask test taken (no lane passed)."""
+    index = {addr: i for i, (addr, _) in enumerate(code)}
+    def mask_tests(tail, head):
+        return sum(1 for a, t in code if head <= a <= tail and t.startswith("kortest"))
+
+    # the triangle loop: the shortest conditional backward branch around a step's two mask tests
+    # (pre-test and exact test) for each ray
+    loops = [(addr, int(t.split()[1], 16)) for addr, t in code
+             if re.fullmatch(r"j(?!mp)\w+\s+[0-9a-f]+", t) and int(t.split()[1], 16) < addr]
+    loops = [span for span in loops if mask_tests(*span) >= 2 * rays]
+    if not loops:
+        sys.exit("port_model: no loop found")
+    tail, head = min(loops, key=lambda span: span[0] - span[1])
+    body, i, previous = [], index[head], ""
+    for _ in range(10000):
+        addr, text = code[i]
+        if text.startswith("j"):
+            target = int(text.split()[1], 16) if re.fullmatch(r"j\w+\s+[0-9a-f]+", text) else None
+            if addr == tail:
+                return body
+            if previous.startswith("kortest") and target is not None:  # no lane passed: skip ahead
+                i = index[target]
+                previous = text
+                continue
+        elif not text.startswith("nop"):
+            body.append(text)
+        previous = text
+        i += 1
+    sys.exit("port_model: the loop path did not close")
+
+
+def model(body, cpu):
+    with tempfile.NamedTemporaryFile("w", suffix=".s") as f:
+        f.write(".intel_syntax noprefix\n" + "\n".join(body) + "\n")
+        f.flush()
+        out = subprocess.run(["llvm-mca", f"-mcpu={cpu}", "-iterations=1000", "-resource-pressure", f.name],
+                             check=True, capture_output=True, text=True).stdout
+    cycles = int(re.search(r"Total Cycles:\s+(\d+)", out).group(1)) / 1000
+    lines = out.splitlines()
+    k = next(i for i, l in enumerate(lines) if l.startswith("Resource pressure per iteration"))
+    names = re.findall(r"\[(\d+)\]", lines[k + 1])
+    values = [0.0 if v == "-" else float(v) for v in lines[k + 2].split()]
+    resources = dict(re.findall(r"\[(\d+)\]\s+-\s+(\S+)", out))
+    busiest = sorted(zip(values, names), reverse=True)[:3]
+    return cycles, ", ".join(f"{resources.get(n, n)} {v:.1f}" for v, n in busiest)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("objects", nargs="*", default=[DEFAULT_OBJECT], metavar="OBJECT")
+    p.add_argument("--rays", type=int, choices=(1, 2), default=2, help="rays per triangle load (default 2)")
+    p.add_argument("--pretest", choices=sorted(PRETEST), default="ordered",
+                   help="the pre-test form (default ordered: Intel's AVX-512 default)")
+    p.add_argument("--cpu", action="append", help="llvm-mca -mcpu (repeatable)")
+    p.add_argument("--max-cycles", type=float, help="exit 1 when the first model's cycles exceed this")
+    a = p.parse_args()
+    if not shutil.which("llvm-mca"):
+        print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
+        sys.exit(77)
+    body = loop_body(instructions(a.objects, symbol(a.rays, a.pretest)), a.rays)
+    tests = 16 * a.rays
+    print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "
+          f"({a.rays} ray(s), {a.pretest} pre-test)")
+    first = None
+    for cpu in a.cpu or ["icelake-server", "skylake-avx512"]:
+        cycles, busiest = model(body, cpu)
+        first = cycles if first is None else first
+        print(f"{cpu}: {cycles:.1f} cycles an iteration, {tests / cycles:.2f} tests/cycle; busiest: {busiest}")
+    if a.max_cycles is not None and first > a.max_cycles:
+        print(f"port_model: {first:.1f} cycles an iteration, more than the {a.max_cycles:g} allowed: the loop "
+              "got longer on Intel's ports (docs/benchmarks.md#decision-fewer-step-instructions)", file=sys.stderr)
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
