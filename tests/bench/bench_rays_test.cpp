@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <regex>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -22,10 +22,25 @@ std::string write_octahedron(const std::string& dir) {
   return path;
 }
 
+// The number after `"key":` in the object that follows `"set":{` (empty when absent).
 std::string field(const std::string& json, const std::string& set, const std::string& key) {
-  const std::regex re("\"" + set + "\":\\{[^}]*\"" + key + "\":([0-9.]+)");
-  std::smatch m;
-  return std::regex_search(json, m, re) ? m[1].str() : "";
+  const std::size_t open = json.find("\"" + set + "\":{");
+  if (open == std::string::npos) return "";
+  const std::size_t close = json.find('}', open);
+  const std::size_t at = json.find("\"" + key + "\":", open);
+  if (at == std::string::npos || at > close) return "";
+  const std::size_t begin = at + key.size() + 3;
+  return json.substr(begin, json.find_first_not_of("0123456789.", begin) - begin);
+}
+
+// The number right after `prefix` in `json`, and where it ends (npos when `prefix` is absent).
+std::pair<double, std::size_t> number_after(const std::string& json, const std::string& prefix,
+                                            std::size_t from = 0) {
+  const std::size_t at = json.find(prefix, from);
+  if (at == std::string::npos) return {0.0, std::string::npos};
+  char* end = nullptr;
+  const double value = std::strtod(json.c_str() + at + prefix.size(), &end);
+  return {value, std::size_t(end - json.c_str())};
 }
 
 TEST(BenchRays, TinyRunPrintsJsonWithEverySetAndPacketsMatchSingleRays) {
@@ -49,15 +64,13 @@ TEST(BenchRays, PrintsTheVectorFmaRatesOfTheHost) {
   const std::string obj = write_octahedron(test::temp_dir("bench_rays_fma"));
   const auto j = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --builds 1 --json");
   ASSERT_EQ(j.status, 0) << j.err;
-  const std::smatch m = [&] {
-    std::smatch found;
-    std::regex_search(j.out, found,
-                      std::regex("\"fma_per_cycle\":\\{\"avx2\":([0-9.]+),\"avx512\":([0-9.]+)\\}"));
-    return found;
-  }();
-  ASSERT_EQ(m.size(), 3u) << j.out;
-  for (const auto& [isa, rate] :
-       {std::pair{Isa::avx2, std::stod(m[1])}, std::pair{Isa::avx512, std::stod(m[2])}}) {
+  const auto [avx2, after_avx2] = number_after(j.out, "\"fma_per_cycle\":{\"avx2\":");
+  ASSERT_NE(after_avx2, std::string::npos) << j.out;
+  // {"avx2":A,"avx512":B}: the second rate right after the first, the object closed after it
+  ASSERT_EQ(j.out.compare(after_avx2, 10, ",\"avx512\":"), 0) << j.out;
+  const auto [avx512, after_avx512] = number_after(j.out, ",\"avx512\":", after_avx2);
+  ASSERT_EQ(j.out.compare(after_avx512, 1, "}"), 0) << j.out;
+  for (const auto& [isa, rate] : {std::pair{Isa::avx2, avx2}, std::pair{Isa::avx512, avx512}}) {
     if (isa_supported(isa)) {
       // measured (an instrumented build runs the probe far below the hardware's rate), and within
       // what any x86-64 core can issue (no more than four FMA pipes)
@@ -77,12 +90,13 @@ TEST(BenchRays, BuildsReportsEveryBuildAndTheirMedian) {
   const auto r = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --builds 4");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"builds\":4,"), std::string::npos) << r.out;
-  std::smatch m;
-  ASSERT_TRUE(
-      std::regex_search(r.out, m, std::regex("\"build_s\":([0-9.]+),\"build_runs_s\":\\[([^\\]]*)\\]")))
-      << r.out;
+  const auto [median, after_median] = number_after(r.out, "\"build_s\":");
+  ASSERT_NE(after_median, std::string::npos) << r.out;
+  const std::string runs_key = ",\"build_runs_s\":[";
+  ASSERT_EQ(r.out.compare(after_median, runs_key.size(), runs_key), 0) << r.out;
+  const std::size_t list_begin = after_median + runs_key.size();
+  const std::string list = r.out.substr(list_begin, r.out.find(']', list_begin) - list_begin);
   std::vector<double> runs;
-  const std::string list = m[2].str();
   for (std::size_t at = 0; at < list.size();) {
     std::size_t used = 0;
     runs.push_back(std::stod(list.substr(at), &used));
@@ -90,7 +104,7 @@ TEST(BenchRays, BuildsReportsEveryBuildAndTheirMedian) {
   }
   ASSERT_EQ(runs.size(), 4u) << list;
   std::sort(runs.begin(), runs.end());
-  EXPECT_DOUBLE_EQ(std::stod(m[1].str()), runs[2]);
+  EXPECT_DOUBLE_EQ(median, runs[2]);
   EXPECT_EQ(test::run_cli("bench rays " + obj + " --size 4x4 --builds 0").status, 2);
 }
 

@@ -3,7 +3,6 @@
 // prints for both with each rank's share; a bad option stops both ranks with one message.
 #include <gtest/gtest.h>
 
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -12,12 +11,18 @@
 namespace rayvec {
 namespace {
 
-// Every "hits":N,"checksum":"0x..." of a JSON report, in row order.
+// Every "hits":N,"checksum":"0x<16 hex digits>" of a JSON report, in row order.
 std::vector<std::string> hits_and_checksums(const std::string& json) {
   std::vector<std::string> out;
-  const std::regex pair("\"hits\":[0-9]+,\"checksum\":\"0x[0-9a-f]{16}\"");
-  for (auto it = std::sregex_iterator(json.begin(), json.end(), pair); it != std::sregex_iterator(); ++it)
-    out.push_back(it->str());
+  const std::string hits = "\"hits\":", checksum = ",\"checksum\":\"0x";
+  for (std::size_t at = json.find(hits); at != std::string::npos; at = json.find(hits, at + 1)) {
+    const std::size_t digits = json.find_first_not_of("0123456789", at + hits.size());
+    if (digits == at + hits.size() || json.compare(digits, checksum.size(), checksum) != 0) continue;
+    const std::size_t hex = digits + checksum.size();
+    if (json.find_first_not_of("0123456789abcdef", hex) != hex + 16 || json.compare(hex + 16, 1, "\"") != 0)
+      continue;
+    out.push_back(json.substr(at, hex + 17 - at));
+  }
   return out;
 }
 
