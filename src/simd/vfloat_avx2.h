@@ -86,7 +86,11 @@ RAYVEC_INLINE vmaskd operator<=(vdouble a, vdouble b) { return {_mm256_cmp_pd(a.
 RAYVEC_INLINE vmaskd operator>(vdouble a, vdouble b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)}; }
 RAYVEC_INLINE vmaskd operator<(vdouble a, vdouble b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
 
-RAYVEC_INLINE vmaskf operator&(vmaskf a, vmaskf b) { return {_mm256_and_ps(a.m, b.m)}; }
+// In the integer domain: g++ sees through its vector-extension form, so a mask of all lanes (a full
+// kernel step's first_lanes) folds away and an and with sign_clear becomes one vandnps.
+RAYVEC_INLINE vmaskf operator&(vmaskf a, vmaskf b) {
+  return {_mm256_castsi256_ps(_mm256_and_si256(_mm256_castps_si256(a.m), _mm256_castps_si256(b.m)))};
+}
 RAYVEC_INLINE vmaskd operator&(vmaskd a, vmaskd b) { return {_mm256_and_pd(a.m, b.m)}; }
 RAYVEC_INLINE bool any(vmaskf a) { return _mm256_movemask_ps(a.m) != 0; }
 RAYVEC_INLINE bool any(vmaskd a) { return _mm256_movemask_pd(a.m) != 0; }
@@ -149,8 +153,9 @@ RAYVEC_INLINE float hmax_lanes(vfloat v, unsigned lanes) {
 // with a clear sign): the float `mt` pre-test ORs its values and tests the sign once
 // (mt_float.inl, mt_sign_pretest).
 RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) { return {_mm256_or_ps(_mm256_or_ps(a.v, b.v), c.v)}; }
+// A mask of sign bits only, as sign_mask: the complement of a's bits.
 RAYVEC_INLINE vmaskf sign_clear(vfloat a) {
-  return {_mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_castps_si256(a.v), _mm256_set1_epi32(-1)))};
+  return {_mm256_castsi256_ps(_mm256_xor_si256(_mm256_castps_si256(a.v), _mm256_set1_epi32(-1)))};
 }
 
 }  // namespace rayvec::avx2
