@@ -2,15 +2,17 @@
 """What a CPU model says the brute-force kernel's inner loop costs: a host of one vendor estimates
 another's throughput (llvm-mca's port model) where it cannot run there.
 
-    scripts/port_model.py [--rays 1|2] [--pretest ordered|sign] [--cpu NAME ...] [--max-cycles C] [OBJECT ...]
+    scripts/port_model.py [--isa avx512|avx2] [--rays 1|2] [--pretest ordered|sign] [--cpu NAME ...]
+                          [--max-cycles C] [OBJECT ...]
 
-Disassembles the AVX-512 `closest_mt_float_rays` kernel (tmin = 0) of a built tree, follows its
+Disassembles the `closest_mt_float_rays` (pairs) or `closest_mt_float_one` kernel (tmin = 0) of an
+ISA unit of a built tree, follows its
 triangle loop along the path a step takes when no lane passes the pre-test (every early-out taken:
 the path almost every step takes), and runs that straight-line body through `llvm-mca` for each
 --cpu (default: icelake-server, the model closest to the Xeons' Golden Cove cores in LLVM 14, and
-skylake-avx512). Prints cycles per loop iteration, the busiest ports and tests per cycle (16 tests
-per ray and iteration). A model, not a measurement: it ignores caches, frequency and the
-front end; docs/benchmarks.md quotes it beside what the same loop measured. OBJECT: the AVX-512 kernel
+skylake-avx512). Prints cycles per loop iteration, the busiest ports and tests per cycle (16 or 8
+tests per ray and iteration). A model, not a measurement: it ignores caches, frequency and the
+front end; docs/benchmarks.md quotes it beside what the same loop measured. OBJECT: the ISA's kernel
 unit's object file(s) (default: the one of build/); the first that defines the kernel is read.
 --max-cycles C exits 1 when the first --cpu's cycles an iteration exceed C (the test that guards the
 loop's length); exit 77 when llvm-mca is missing (Debian: llvm).
@@ -22,16 +24,22 @@ import subprocess
 import sys
 import tempfile
 
-DEFAULT_OBJECT = "build/src/CMakeFiles/rayvec_core_avx512.dir/kernels/triangle_kernels_avx512.cpp.o"
 PRETEST = {"sign": 0, "ordered": 1}
+# per ISA: its namespace as mangled, the lanes of a step, its kernel unit's object in build/
+ISAS = {"avx512": ("6avx512", 16), "avx2": ("4avx2", 8)}
 
 
-def symbol(rays, pretest):
+def default_object(isa):
+    return f"build/src/CMakeFiles/rayvec_core_{isa}.dir/kernels/triangle_kernels_{isa}.cpp.o"
+
+
+def symbol(isa, rays, pretest):
     """closest_mt_float_rays<vfloat, true, 2, P> (pairs) or closest_mt_float_one<vfloat, true, P>."""
+    ns = ISAS[isa][0]
     if rays == 2:
-        return (f"_ZN6rayvec6avx51221closest_mt_float_raysINS0_6vfloatELb1ELi2ELNS_9MtPretestE"
+        return (f"_ZN6rayvec{ns}21closest_mt_float_raysINS0_6vfloatELb1ELi2ELNS_9MtPretestE"
                 f"{PRETEST[pretest]}EEEvRKNS_14TriangleArraysEjjPKNS_3RayEPNS_3HitE")
-    return (f"_ZN6rayvec6avx51220closest_mt_float_oneINS0_6vfloatELb1ELNS_9MtPretestE"
+    return (f"_ZN6rayvec{ns}20closest_mt_float_oneINS0_6vfloatELb1ELNS_9MtPretestE"
             f"{PRETEST[pretest]}EEEvRKNS_14TriangleArraysEjjRKNS_3RayERNS_3HitE")
 
 
@@ -58,8 +66,13 @@ def disassembly(out):
 def loop_body(code, rays):
     """The loop's straight-line path with every branch after a mask test taken (no lane passed)."""
     index = {addr: i for i, (addr, _) in enumerate(code)}
+    # a step's early-out: a branch on a mask register (AVX-512) or on the sign bits a vmovmskps
+    # took (AVX2)
+    tests = {i for i, (_, t) in enumerate(code)
+             if t.startswith("kortest") or (t.startswith("test") and i > 0 and code[i - 1][1].startswith("vmovmsk"))}
+
     def mask_tests(tail, head):
-        return sum(1 for a, t in code if head <= a <= tail and t.startswith("kortest"))
+        return sum(1 for i in tests if head <= code[i][0] <= tail)
 
     # the triangle loop: the shortest conditional backward branch around a step's two mask tests
     # (pre-test and exact test) for each ray
@@ -69,20 +82,18 @@ def loop_body(code, rays):
     if not loops:
         sys.exit("port_model: no loop found")
     tail, head = min(loops, key=lambda span: span[0] - span[1])
-    body, i, previous = [], index[head], ""
+    body, i = [], index[head]
     for _ in range(10000):
         addr, text = code[i]
         if text.startswith("j"):
             target = int(text.split()[1], 16) if re.fullmatch(r"j\w+\s+[0-9a-f]+", text) else None
             if addr == tail:
                 return body
-            if previous.startswith("kortest") and target is not None:  # no lane passed: skip ahead
+            if i - 1 in tests and target is not None:  # no lane passed: skip ahead
                 i = index[target]
-                previous = text
                 continue
         elif not text.startswith("nop"):
             body.append(text)
-        previous = text
         i += 1
     sys.exit("port_model: the loop path did not close")
 
@@ -105,20 +116,21 @@ def model(body, cpu):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("objects", nargs="*", default=[DEFAULT_OBJECT], metavar="OBJECT")
+    p.add_argument("objects", nargs="*", metavar="OBJECT")
+    p.add_argument("--isa", choices=sorted(ISAS), default="avx512", help="the kernel unit (default avx512)")
     p.add_argument("--rays", type=int, choices=(1, 2), default=2, help="rays per triangle load (default 2)")
     p.add_argument("--pretest", choices=sorted(PRETEST), default="ordered",
-                   help="the pre-test form (default ordered: Intel's AVX-512 default)")
+                   help="the pre-test form (default ordered: Intel's AVX-512 default; AVX2 always uses sign)")
     p.add_argument("--cpu", action="append", help="llvm-mca -mcpu (repeatable)")
     p.add_argument("--max-cycles", type=float, help="exit 1 when the first model's cycles exceed this")
     a = p.parse_args()
     if not shutil.which("llvm-mca"):
         print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
         sys.exit(77)
-    body = loop_body(instructions(a.objects, symbol(a.rays, a.pretest)), a.rays)
-    tests = 16 * a.rays
+    body = loop_body(instructions(a.objects or [default_object(a.isa)], symbol(a.isa, a.rays, a.pretest)), a.rays)
+    tests = ISAS[a.isa][1] * a.rays
     print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "
-          f"({a.rays} ray(s), {a.pretest} pre-test)")
+          f"({a.isa}, {a.rays} ray(s), {a.pretest} pre-test)")
     first = None
     for cpu in a.cpu or ["icelake-server", "skylake-avx512"]:
         cycles, busiest = model(body, cpu)
