@@ -88,7 +88,7 @@ RAYVEC_INLINE typename V::Mask mt_edges(const MtNumerators<V>& c) {
 }
 
 // mt_numerator_values plus `mask` = the closed edge tests and the upper depth pre-test
-// tn < hi·|det|, but NOT the lower one (tmin), which the callers add (mt_numerators; the packet
+// tn < hi·|det|, but NOT the lower one (tmin), which the callers add (the any-hit loop; the packet
 // kernel per lane). |det| = 0 fails the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN).
 template <class V, class At>
 RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const At& at, const RayLanes<V>& r, typename V::Mask active,
@@ -141,17 +141,6 @@ RAYVEC_INLINE typename V::Mask mt_pretest(const MtNumerators<V>& c, typename V::
     return mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi);
   else
     return mt_ordered_pretest<V, TminZero>(c, active, neg_lo, hi);
-}
-
-template <class V, bool TminZero>
-RAYVEC_INLINE MtNumerators<V> mt_numerators(const TriangleArrays& T, uint32_t i, const RayLanes<V>& r,
-                                            typename V::Mask active, V lo, V hi) {
-  MtNumerators<V> out = mt_numerators_core<V>(mt_lanes<V>(T, i), r, active, hi);
-  if constexpr (TminZero)
-    out.mask = out.mask & (out.tn >= V::broadcast(0.0f));  // no multiply for tmin = 0
-  else
-    out.mask = out.mask & (out.tn >= lo * out.adet);
-  return out;
 }
 
 // Widening factors of the pre-test: 2^-20 covers the float rounding of best·(1 + 2^-20)·|det| and
@@ -364,22 +353,35 @@ RAYVEC_INLINE MtAnyHitRay<V> mt_any_hit_ray(const Ray& ray) {
 }
 
 // Any hit of the ray `q` (finite origin and direction, no NaN interval) in [begin, end) accepted by
-// `filter` (may be null).
+// `filter` (may be null). As the closest-hit loops: a head step if begin is not on a step, full
+// steps without a lane mask, the row pointer carried, the partial last step.
 template <class V>
 RAYVEC_INLINE bool occluded_mt_float_lanes(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                            const MtAnyHitRay<V>& q, const HitFilter* filter) {
-  for (uint32_t i = first_step(begin, V::W); i < end; i += V::W) {
-    const MtNumerators<V> c = mt_numerators<V, false>(T, i, q.r, step_lanes<V>(i, begin, end), q.lo, q.hi);
-    if (!any(c.mask)) continue;
+  constexpr uint32_t W = V::W;
+  const auto step = [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
+    MtNumerators<V> c = mt_numerators_core<V>(MtTriangleLanes<V>{p}, q.r, active, q.hi);
+    c.mask = c.mask & (c.tn >= q.lo * c.adet);
+    if (!any(c.mask)) return false;
     const V t = c.tn / c.adet;
     const typename V::Mask m = c.mask & (t >= q.r.tmin) & (t < q.tlimit);
-    if (!any(m)) continue;
+    if (!any(m)) return false;
     if (!filter) return true;
     for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
       if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))]))
         return true;
+    return false;
+  };
+  uint32_t i = begin;
+  if (i % W != 0 && i < end) {
+    const uint32_t head = first_step(i, W);
+    if (step(T.v0x + slot_offset(head), head, step_lanes<V>(head, begin, end))) return true;
+    i = head + W;
   }
-  return false;
+  const float* p = T.v0x + slot_offset(i);
+  for (; end - i >= W && i < end; p = next_step<V>(p, i), i += W)
+    if (step(p, i, first_lanes(V{}, W))) return true;
+  return i < end && step(p, i, first_lanes(V{}, end - i));
 }
 
 template <class V>
