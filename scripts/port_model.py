@@ -115,15 +115,17 @@ def model(body, cpu):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0].replace("\n", " "),
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("objects", nargs="*", metavar="OBJECT")
     p.add_argument("--isa", choices=sorted(ISAS), default="avx512", help="the kernel unit (default avx512)")
     p.add_argument("--rays", type=int, choices=(1, 2), default=2, help="rays per triangle load (default 2)")
-    p.add_argument("--pretest", choices=sorted(PRETEST), default="ordered",
-                   help="the pre-test form (default ordered: Intel's AVX-512 default; AVX2 always uses sign)")
+    p.add_argument("--pretest", choices=sorted(PRETEST),
+                   help="the pre-test form (default: what Intel runs, ordered on AVX-512, sign on AVX2)")
     p.add_argument("--cpu", action="append", help="llvm-mca -mcpu (repeatable)")
     p.add_argument("--max-cycles", type=float, help="exit 1 when the first model's cycles exceed this")
     a = p.parse_args()
+    a.pretest = a.pretest or ("ordered" if a.isa == "avx512" else "sign")
     if not shutil.which("llvm-mca"):
         print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
         sys.exit(77)
