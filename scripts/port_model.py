@@ -66,13 +66,18 @@ def disassembly(out):
 def loop_body(code, rays):
     """The loop's straight-line path with every branch after a mask test taken (no lane passed)."""
     index = {addr: i for i, (addr, _) in enumerate(code)}
-    # a step's early-out: a branch on a mask register (AVX-512) or on the sign bits a vmovmskps
-    # took (AVX2)
-    tests = {i for i, (_, t) in enumerate(code)
-             if t.startswith("kortest") or (t.startswith("test") and i > 0 and code[i - 1][1].startswith("vmovmsk"))}
+    # a step's early-out: a conditional branch on a mask register (AVX-512), on a vtestps, or on sign
+    # bits a vmovmskps took in the three instructions before it (AVX2)
+    def early_out(i):
+        if not re.fullmatch(r"j(?!mp)\w+\s+[0-9a-f]+", code[i][1]) or i < 1:
+            return False
+        return code[i - 1][1].startswith(("kortest", "vtestp", "vptest")) or any(
+            t.startswith("vmovmsk") for _, t in code[max(0, i - 3):i])
+
+    exits = {i for i in range(len(code)) if early_out(i)}
 
     def mask_tests(tail, head):
-        return sum(1 for i in tests if head <= code[i][0] <= tail)
+        return sum(1 for i in exits if head <= code[i][0] <= tail)
 
     # the triangle loop: the shortest conditional backward branch around a step's two mask tests
     # (pre-test and exact test) for each ray
@@ -89,7 +94,7 @@ def loop_body(code, rays):
             target = int(text.split()[1], 16) if re.fullmatch(r"j\w+\s+[0-9a-f]+", text) else None
             if addr == tail:
                 return body
-            if i - 1 in tests and target is not None:  # no lane passed: skip ahead
+            if i in exits and target is not None:  # no lane passed: skip ahead
                 i = index[target]
                 continue
         elif not text.startswith("nop"):

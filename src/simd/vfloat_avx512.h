@@ -171,6 +171,10 @@ RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) {
 RAYVEC_INLINE vmaskf sign_clear(vfloat a) {
   return {_mm512_testn_epi32_mask(_mm512_castps_si512(a.v), _mm512_set1_epi32(INT32_MIN))};
 }
+// any(active & sign_clear(a)), the mask left unformed
+RAYVEC_INLINE bool any_sign_clear(vmaskf active, vfloat a) {
+  return _mm512_mask_testn_epi32_mask(active.m, _mm512_castps_si512(a.v), _mm512_set1_epi32(INT32_MIN)) != 0;
+}
 
 // vfloat8: 8 floats in a ymm register with AVX-512VL mask compares — the lane type of 8-wide BVH
 // nodes (bvh/simd/box_lanes.inl), where a zmm would test 8 children that do not exist. Only what the

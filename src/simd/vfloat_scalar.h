@@ -134,5 +134,7 @@ RAYVEC_INLINE vfloat or3(vfloat a, vfloat b, vfloat c) {
                                std::bit_cast<uint32_t>(c.v))};
 }
 RAYVEC_INLINE vmask sign_clear(vfloat a) { return {(std::bit_cast<uint32_t>(a.v) >> 31) == 0}; }
+// any(active & sign_clear(a)), the mask left unformed
+RAYVEC_INLINE bool any_sign_clear(vmask active, vfloat a) { return any(active & sign_clear(a)); }
 
 }  // namespace rayvec::scalar
