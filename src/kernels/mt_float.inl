@@ -43,7 +43,7 @@ RAYVEC_INLINE MtTriangleLanes<V> mt_lanes(const TriangleArrays& T, uint32_t i) {
 
 // The v0x position of the step after the W-aligned step at slot i, whose position is p: the next W
 // slots of the block, or the first slots of the next block. The loops carry it instead of
-// recomputing slot_offset (a division, a remainder and a multiply a step): on AVX-512 one add.
+// recomputing slot_offset (a shift, a mask, a multiply and an add a step): on AVX-512 one add.
 template <class V>
 RAYVEC_INLINE const float* next_step(const float* p, uint32_t i) {
   if constexpr (V::W == kSlotBlock)
@@ -107,7 +107,8 @@ RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const At& at, const RayLanes<V>
 // Conservative: every lane passing the ordered tests (mt_edges, tmin <= t <= hi) passes it; NaN
 // lanes and |det| = 0 may pass too, so the caller must repeat the ordered tests on the rare steps
 // where a lane passes (mt_closest_step). neg_lo = −lo (unused when TminZero).
-// The ORed values whose sign bits the pre-test reads: a lane passes where the sign is clear.
+// mt_sign_values: the ORed values whose sign bits the test reads (a lane passes where the sign is
+// clear); mt_sign_pretest: the passing lanes as a mask.
 template <class V, bool TminZero>
 RAYVEC_INLINE V mt_sign_values(const MtNumerators<V>& c, V neg_lo, V hi) {
   const V zero = V::broadcast(0.0f);
@@ -142,8 +143,7 @@ RAYVEC_INLINE typename V::Mask mt_ordered_pretest(const MtNumerators<V>& c, type
 
 // A step's pre-test outcome as its loops read it: first whether any lane passes (the early-out of
 // almost every step), then, on the rare steps where one does, which lanes. The sign-bit form forms
-// its mask only then (any_sign_clear tests the signs directly: on AVX2 one instruction instead of
-// three a step).
+// its mask only then (any_sign_clear reads the sign bits directly: on AVX2 a vpxor fewer a step).
 template <class V>
 struct MtSignPre {
   typename V::Mask active;
