@@ -36,13 +36,9 @@ struct MtTriangleLanes {
   RAYVEC_INLINE V operator()(uint32_t row) const { return V::load(p + row * kSlotBlock); }
   RAYVEC_INLINE V edge(uint32_t row, V v0) const { return (*this)(row)-v0; }
 };
-template <class V>
-RAYVEC_INLINE MtTriangleLanes<V> mt_lanes(const TriangleArrays& T, uint32_t i) {
-  return {T.v0x + slot_offset(i)};
-}
 
 // The v0x position of the step after the W-aligned step at slot i, whose position is p: the next W
-// slots of the block, or the first slots of the next block. The loops carry it instead of
+// slots of the block, or the first slots of the next block. Carried from step to step instead of
 // recomputing slot_offset (a shift, a mask, a multiply and an add a step): on AVX-512 one add.
 template <class V>
 RAYVEC_INLINE const float* next_step(const float* p, uint32_t i) {
@@ -50,6 +46,25 @@ RAYVEC_INLINE const float* next_step(const float* p, uint32_t i) {
     return p + kSlotBlockFloats;
   else
     return (i + V::W) % kSlotBlock == 0 ? p + (kSlotBlockFloats - kSlotBlock + V::W) : p + V::W;
+}
+
+// Every float `mt` loop's walk over the W-slot steps of [begin, end): `step(p, i, active)` for the
+// step at slot i, whose v0x position is p — a head step if begin is not on a step (lanes before begin
+// masked), the full steps without a lane mask (p carried by next_step), the partial last step.
+// Returns true as soon as a step does (an any-hit found), else false.
+template <class V, class Step>
+RAYVEC_INLINE bool mt_steps(const TriangleArrays& T, uint32_t begin, uint32_t end, const Step& step) {
+  constexpr uint32_t W = V::W;
+  uint32_t i = begin;
+  if (i % W != 0 && i < end) {
+    const uint32_t head = first_step(i, W);
+    if (step(T.v0x + slot_offset(head), head, step_lanes<V>(head, begin, end))) return true;
+    i = head + W;
+  }
+  const float* p = T.v0x + slot_offset(i);
+  for (; end - i >= W && i < end; p = next_step<V>(p, i), i += W)
+    if (step(p, i, first_lanes(V{}, W))) return true;
+  return i < end && step(p, i, first_lanes(V{}, end - i));
 }
 
 // The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` against the triangle lanes
@@ -186,7 +201,7 @@ struct MtBest {
   bool found;
 };
 
-// The step at slot i, whose v0x position is p (mt_lanes).
+// The step at slot i, whose v0x position is p (mt_steps).
 template <class V, bool TminZero, MtPretest P>
 RAYVEC_INLINE void mt_closest_step(const float* p, uint32_t i, const RayLanes<V>& r, typename V::Mask active,
                                    V neg_lo, MtBest<V>& b) {
@@ -258,29 +273,17 @@ RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
 template <class V, bool TminZero, int R, MtPretest P = MtPretest::sign_bits>
 void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
                            Hit* hits) {
-  constexpr int W = V::W;
   MtRay<V> q[R];
   V neg_lo[R];  // −lo, for mt_sign_pretest's fused t·|det| − lo·|det|
   for (int k = 0; k < R; ++k) {
     q[k] = mt_ray<V>(rays[k], hits[k]);
     neg_lo[k] = V::broadcast(0.0f) - q[k].lo;
   }
-  // a head step if begin is not on a step, full steps without a lane mask, the partial last step
-  const typename V::Mask all = first_lanes(V{}, W);
-  uint32_t i = begin;
-  if (i % W != 0 && i < end) {
-    const uint32_t head = first_step(i, W);
-    const float* p = T.v0x + slot_offset(head);
-    for (int k = 0; k < R; ++k)
-      mt_closest_step<V, TminZero, P>(p, head, q[k].r, step_lanes<V>(head, begin, end), neg_lo[k], q[k].b);
-    i = head + W;
-  }
-  const float* p = T.v0x + slot_offset(i);
-  for (; end - i >= uint32_t(W) && i < end; p = next_step<V>(p, i), i += W)
-    for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(p, i, q[k].r, all, neg_lo[k], q[k].b);
-  if (i < end)
-    for (int k = 0; k < R; ++k)
-      mt_closest_step<V, TminZero, P>(p, i, q[k].r, first_lanes(V{}, end - i), neg_lo[k], q[k].b);
+  mt_steps<V>(
+      T, begin, end, [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
+        for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(p, i, q[k].r, active, neg_lo[k], q[k].b);
+        return false;
+      });
   for (int k = 0; k < R; ++k) mt_finish<V>(T, q[k].b, q[k].initial, hits[k]);
 }
 
@@ -303,11 +306,11 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
   const auto step = [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
     const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleLanes<V>{p}, r);
     const auto pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, hi);
-    if (!pre.passes()) return;
+    if (!pre.passes()) return false;
     const V t = c.tn / c.adet;
     const typename V::Mask m =
         pre.lanes() & mt_edges(c) & (c.adet > V::broadcast(0.0f)) & (t >= r.tmin) & (t < V::broadcast(best));
-    if (!any(m)) return;
+    if (!any(m)) return false;
     best = hmin(select(m, V::broadcast(__builtin_inff()), t));
     const unsigned k = unsigned(__builtin_ctz(bits(m & (t <= V::broadcast(best)))));
     alignas(64) float us[W], vs[W], as[W];
@@ -319,16 +322,9 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
     adet = as[k];
     winner = i + k;
     hi = V::broadcast(best * kMtWiden);
+    return false;
   };
-  uint32_t i = begin;
-  if (i % W != 0 && i < end) {  // a head step if begin is not on a step
-    const uint32_t head = first_step(i, W);
-    step(T.v0x + slot_offset(head), head, step_lanes<V>(head, begin, end));
-    i = head + W;
-  }
-  const float* p = T.v0x + slot_offset(i);
-  for (; end - i >= W && i < end; p = next_step<V>(p, i), i += W) step(p, i, first_lanes(V{}, W));
-  if (i < end) step(p, i, first_lanes(V{}, end - i));
+  mt_steps<V>(T, begin, end, step);
   if (!(best < initial)) return;
   const int32_t id = T.id[slot_offset(winner)];
   if (best < hit.t || (best == hit.t && (hit.tri < 0 || id < hit.tri)))
@@ -377,12 +373,10 @@ RAYVEC_INLINE MtAnyHitRay<V> mt_any_hit_ray(const Ray& ray) {
 }
 
 // Any hit of the ray `q` (finite origin and direction, no NaN interval) in [begin, end) accepted by
-// `filter` (may be null). As the closest-hit loops: a head step if begin is not on a step, full
-// steps without a lane mask, the row pointer carried, the partial last step.
+// `filter` (may be null).
 template <class V>
 RAYVEC_INLINE bool occluded_mt_float_lanes(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                            const MtAnyHitRay<V>& q, const HitFilter* filter) {
-  constexpr uint32_t W = V::W;
   const auto step = [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
     MtNumerators<V> c = mt_numerators_core<V>(MtTriangleLanes<V>{p}, q.r, active, q.hi);
     c.mask = c.mask & (c.tn >= q.lo * c.adet);
@@ -396,16 +390,7 @@ RAYVEC_INLINE bool occluded_mt_float_lanes(const TriangleArrays& T, uint32_t beg
         return true;
     return false;
   };
-  uint32_t i = begin;
-  if (i % W != 0 && i < end) {
-    const uint32_t head = first_step(i, W);
-    if (step(T.v0x + slot_offset(head), head, step_lanes<V>(head, begin, end))) return true;
-    i = head + W;
-  }
-  const float* p = T.v0x + slot_offset(i);
-  for (; end - i >= W && i < end; p = next_step<V>(p, i), i += W)
-    if (step(p, i, first_lanes(V{}, W))) return true;
-  return i < end && step(p, i, first_lanes(V{}, end - i));
+  return mt_steps<V>(T, begin, end, step);
 }
 
 template <class V>
