@@ -2,11 +2,12 @@
 """What a CPU model says the brute-force kernel's inner loop costs: a host of one vendor estimates
 another's throughput (llvm-mca's port model) where it cannot run there.
 
-    scripts/port_model.py [--isa avx512|avx2] [--rays 1|2] [--pretest ordered|sign] [--cpu NAME ...]
-                          [--max-cycles C] [OBJECT ...]
+    scripts/port_model.py [--isa avx512|avx2] [--rays 1|2] [--pretest ordered|sign]
+                          [--origin shared|separate] [--cpu NAME ...] [--max-cycles C] [OBJECT ...]
 
-Disassembles the `closest_mt_float_rays` (pairs) or `closest_mt_float_one` kernel (tmin = 0) of an
-ISA unit of a built tree, follows its
+Disassembles the `closest_mt_float_rays` (pairs; by default the form for two rays from one origin,
+as a camera's are: --origin separate for the other) or `closest_mt_float_one` kernel (tmin = 0) of
+an ISA unit of a built tree, follows its
 triangle loop along the path a step takes when no lane passes the pre-test (every early-out taken:
 the path almost every step takes), and runs that straight-line body through `llvm-mca` for each
 --cpu (default: icelake-server, the model closest to the Xeons' Golden Cove cores in LLVM 14, and
@@ -33,12 +34,12 @@ def default_object(isa):
     return f"build/src/CMakeFiles/rayvec_core_{isa}.dir/kernels/triangle_kernels_{isa}.cpp.o"
 
 
-def symbol(isa, rays, pretest):
-    """closest_mt_float_rays<vfloat, true, 2, P> (pairs) or closest_mt_float_one<vfloat, true, P>."""
+def symbol(isa, rays, pretest, shared):
+    """closest_mt_float_rays<vfloat, true, 2, P, shared> (pairs) or closest_mt_float_one<vfloat, true, P>."""
     ns = ISAS[isa][0]
     if rays == 2:
         return (f"_ZN6rayvec{ns}21closest_mt_float_raysINS0_6vfloatELb1ELi2ELNS_9MtPretestE"
-                f"{PRETEST[pretest]}EEEvRKNS_14TriangleArraysEjjPKNS_3RayEPNS_3HitE")
+                f"{PRETEST[pretest]}ELb{int(shared)}EEEvRKNS_14TriangleArraysEjjPKNS_3RayEPNS_3HitE")
     return (f"_ZN6rayvec{ns}20closest_mt_float_oneINS0_6vfloatELb1ELNS_9MtPretestE"
             f"{PRETEST[pretest]}EEEvRKNS_14TriangleArraysEjjRKNS_3RayERNS_3HitE")
 
@@ -127,6 +128,8 @@ def main():
     p.add_argument("--rays", type=int, choices=(1, 2), default=2, help="rays per triangle load (default 2)")
     p.add_argument("--pretest", choices=sorted(PRETEST),
                    help="the pre-test form (default: what Intel runs, ordered on AVX-512, sign on AVX2)")
+    p.add_argument("--origin", choices=("shared", "separate"), default="shared",
+                   help="pairs: the kernel for rays from one origin (default) or from two")
     p.add_argument("--cpu", action="append", help="llvm-mca -mcpu (repeatable)")
     p.add_argument("--max-cycles", type=float, help="exit 1 when the first model's cycles exceed this")
     a = p.parse_args()
@@ -134,10 +137,11 @@ def main():
     if not shutil.which("llvm-mca"):
         print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
         sys.exit(77)
-    body = loop_body(instructions(a.objects or [default_object(a.isa)], symbol(a.isa, a.rays, a.pretest)), a.rays)
+    body = loop_body(instructions(a.objects or [default_object(a.isa)], symbol(a.isa, a.rays, a.pretest, a.origin == "shared")),
+                     a.rays)
     tests = ISAS[a.isa][1] * a.rays
     print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "
-          f"({a.isa}, {a.rays} ray(s), {a.pretest} pre-test)")
+          f"({a.isa}, {a.rays} ray(s){', ' + a.origin + ' origin' if a.rays == 2 else ''}, {a.pretest} pre-test)")
     first = None
     for cpu in a.cpu or ["icelake-server", "skylake-avx512"]:
         cycles, busiest = model(body, cpu)

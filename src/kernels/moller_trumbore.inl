@@ -36,6 +36,13 @@ RAYVEC_INLINE bool finite_ray(const Ray& r) {
   return r.tmin == r.tmin && r.tmax == r.tmax;
 }
 
+// Whether a and b are the same bits (so −0 and +0 differ: v0 − o then rounds alike for both).
+RAYVEC_INLINE bool same_bits(const Vec3f& a, const Vec3f& b) {
+  return __builtin_bit_cast(uint32_t, a.x) == __builtin_bit_cast(uint32_t, b.x) &&
+         __builtin_bit_cast(uint32_t, a.y) == __builtin_bit_cast(uint32_t, b.y) &&
+         __builtin_bit_cast(uint32_t, a.z) == __builtin_bit_cast(uint32_t, b.z);
+}
+
 // The smallest value greater than x (x itself for +inf and NaN), so `t < next_up(x)` means t <= x.
 RAYVEC_INLINE float next_up(float x) {
   if (!(x == x) || x == __builtin_inff()) return x;

@@ -67,31 +67,50 @@ RAYVEC_INLINE bool mt_steps(const TriangleArrays& T, uint32_t begin, uint32_t en
   return i < end && step(p, i, first_lanes(V{}, end - i));
 }
 
-// The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` against the triangle lanes
-// `at` gives — un, vn, tn and |det| only (`mask` is left unset; mt_numerators_core and
-// mt_closest_step add their tests).
+// The part of the arithmetic that depends on the ray's origin but not on its direction: s = v0 − o
+// and t·det = s · ng (before det's sign is folded in). Rays from one origin (a camera's, a
+// visibility study's) share it: the pair kernel forms it once for both rays, from the same
+// operations, so each ray's numerators are bit for bit those it gets alone.
+template <class V>
+struct MtOrigin {
+  V sx, sy, sz, tn;
+};
+
 template <class V, class At>
-RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const At& at, const RayLanes<V>& r) {
-  MtNumerators<V> out;
-  // s = v0 − o, c = s × d
-  const V v0x = at(kRowV0), v0y = at(kRowV0 + 1), v0z = at(kRowV0 + 2);
-  const V sx = v0x - r.ox, sy = v0y - r.oy, sz = v0z - r.oz;
-  const V cx = fmsub(sy, r.dz, sz * r.dy);
-  const V cy = fmsub(sz, r.dx, sx * r.dz);
-  const V cz = fmsub(sx, r.dy, sy * r.dx);
-  // det = d · ng
+RAYVEC_INLINE MtOrigin<V> mt_origin_values(const At& at, const RayLanes<V>& r) {
+  const V sx = at(kRowV0) - r.ox, sy = at(kRowV0 + 1) - r.oy, sz = at(kRowV0 + 2) - r.oz;
   const V ngx = at(kRowNg), ngy = at(kRowNg + 1), ngz = at(kRowNg + 2);
-  const V det = fmadd(r.dx, ngx, fmadd(r.dy, ngy, r.dz * ngz));
+  return {sx, sy, sz, fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz))};
+}
+
+// The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` from the origin part `o`
+// against the triangle lanes `at` gives — un, vn, tn and |det| only (`mask` is left unset;
+// mt_numerators_core and mt_closest_step add their tests).
+template <class V, class At>
+RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const At& at, const RayLanes<V>& r, const MtOrigin<V>& o) {
+  MtNumerators<V> out;
+  // c = s × d
+  const V cx = fmsub(o.sy, r.dz, o.sz * r.dy);
+  const V cy = fmsub(o.sz, r.dx, o.sx * r.dz);
+  const V cz = fmsub(o.sx, r.dy, o.sy * r.dx);
+  // det = d · ng
+  const V det = fmadd(r.dx, at(kRowNg), fmadd(r.dy, at(kRowNg + 1), r.dz * at(kRowNg + 2)));
   out.adet = abs(det);
   // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
   // one xor fewer than folding it)
   // e2 = v2 − v0 and e1 = v1 − v0: the fill's float subtraction, bit for bit (triangle_soa.h)
+  const V v0x = at(kRowV0), v0y = at(kRowV0 + 1), v0z = at(kRowV0 + 2);
   const V e2x = at.edge(kRowV2, v0x), e2y = at.edge(kRowV2 + 1, v0y), e2z = at.edge(kRowV2 + 2, v0z);
   out.un = xor_sign(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), det);
   const V e1x = at.edge(kRowV1, v0x), e1y = at.edge(kRowV1 + 1, v0y), e1z = at.edge(kRowV1 + 2, v0z);
   out.vn = xor_sign(fmadd(e1x, cx, fmadd(e1y, cy, e1z * cz)), det);
-  out.tn = xor_sign(fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz)), det);
+  out.tn = xor_sign(o.tn, det);
   return out;
+}
+
+template <class V, class At>
+RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const At& at, const RayLanes<V>& r) {
+  return mt_numerator_values<V>(at, r, mt_origin_values<V>(at, r));
 }
 
 // The closed edge tests of numerators `c`: −u·|det| <= 0, v·|det| >= 0, (u + v)·|det| <= |det|;
@@ -201,11 +220,11 @@ struct MtBest {
   bool found;
 };
 
-// The step at slot i, whose v0x position is p (mt_steps).
+// The step at slot i, whose v0x position is p (mt_steps), for the ray `r` from the origin part `o`.
 template <class V, bool TminZero, MtPretest P>
-RAYVEC_INLINE void mt_closest_step(const float* p, uint32_t i, const RayLanes<V>& r, typename V::Mask active,
-                                   V neg_lo, MtBest<V>& b) {
-  const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleLanes<V>{p}, r);
+RAYVEC_INLINE void mt_closest_step(const float* p, uint32_t i, const RayLanes<V>& r, const MtOrigin<V>& o,
+                                   typename V::Mask active, V neg_lo, MtBest<V>& b) {
+  const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleLanes<V>{p}, r, o);
   const auto pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, b.hi);
   if (!pre.passes()) return;
   // the ordered tests (NaN and |det| = 0 fail them) and the exact depth test, only for steps where
@@ -269,8 +288,9 @@ RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
       MtBest<V>{V::broadcast(initial), V::broadcast(initial * kMtWiden), zero, zero, zero, zero, false}};
 }
 
-// R rays (1 or 2) against [begin, end): each triangle step is loaded once for all R rays.
-template <class V, bool TminZero, int R, MtPretest P = MtPretest::sign_bits>
+// R rays (1 or 2) against [begin, end): each triangle step is loaded once for all R rays. With
+// SharedOrigin (the rays' origins equal bit for bit) the origin part of each step is formed once.
+template <class V, bool TminZero, int R, MtPretest P = MtPretest::sign_bits, bool SharedOrigin = false>
 void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
                            Hit* hits) {
   MtRay<V> q[R];
@@ -281,7 +301,16 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
   }
   mt_steps<V>(
       T, begin, end, [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
-        for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(p, i, q[k].r, active, neg_lo[k], q[k].b);
+        const MtTriangleLanes<V> at{p};
+        if constexpr (SharedOrigin) {
+          const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
+          for (int k = 0; k < R; ++k)
+            mt_closest_step<V, TminZero, P>(p, i, q[k].r, o, active, neg_lo[k], q[k].b);
+        } else {
+          for (int k = 0; k < R; ++k)
+            mt_closest_step<V, TminZero, P>(p, i, q[k].r, mt_origin_values<V>(at, q[k].r), active, neg_lo[k],
+                                            q[k].b);
+        }
         return false;
       });
   for (int k = 0; k < R; ++k) mt_finish<V>(T, q[k].b, q[k].initial, hits[k]);
@@ -349,10 +378,17 @@ void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end
     closest_mt_float<V, P>(T, begin, end, rays[1], hits[1]);
     return;
   }
-  if (rays[0].tmin == 0.0f && rays[1].tmin == 0.0f)
+  const bool tmin_zero = rays[0].tmin == 0.0f && rays[1].tmin == 0.0f;
+  if (same_bits(rays[0].org, rays[1].org)) {
+    if (tmin_zero)
+      closest_mt_float_rays<V, true, 2, P, true>(T, begin, end, rays, hits);
+    else
+      closest_mt_float_rays<V, false, 2, P, true>(T, begin, end, rays, hits);
+  } else if (tmin_zero) {
     closest_mt_float_rays<V, true, 2, P>(T, begin, end, rays, hits);
-  else
+  } else {
     closest_mt_float_rays<V, false, 2, P>(T, begin, end, rays, hits);
+  }
 }
 
 // One ray's constants of the float `mt` any-hit kernel: its lanes, the pre-test's lower and upper
