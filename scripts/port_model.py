@@ -2,12 +2,13 @@
 """What a CPU model says the brute-force kernel's inner loop costs: a host of one vendor estimates
 another's throughput (llvm-mca's port model) where it cannot run there.
 
-    scripts/port_model.py [--isa avx512|avx2] [--rays 1|2] [--pretest ordered|sign]
+    scripts/port_model.py [--isa avx512|avx2] [--rays 1|2|4|8] [--pretest ordered|sign]
                           [--origin shared|separate] [--cpu NAME ...] [--max-cycles C] [OBJECT ...]
 
-Disassembles the `closest_mt_float_rays` (pairs; by default the form for two rays from one origin,
-as a camera's are: --origin separate for the other) or `closest_mt_float_one` kernel (tmin = 0) of
-an ISA unit of a built tree, follows its
+Disassembles the `closest_mt_float_rays` kernel for R rays (by default the group that rays from one
+origin, as a camera's are, go through with that pre-test: 4 with the ordered one, 8 with the sign
+bits; a pair is from one origin unless --origin separate) or, for --rays 1, `closest_mt_float_one`
+(tmin = 0) of an ISA unit of a built tree, follows its
 triangle loop along the path a step takes when no lane passes the pre-test (every early-out taken:
 the path almost every step takes), and runs that straight-line body through `llvm-mca` for each
 --cpu (default: icelake-server, the model closest to the Xeons' Golden Cove cores in LLVM 14, and
@@ -35,10 +36,10 @@ def default_object(isa):
 
 
 def symbol(isa, rays, pretest, shared):
-    """closest_mt_float_rays<vfloat, true, 2, P, shared> (pairs) or closest_mt_float_one<vfloat, true, P>."""
+    """closest_mt_float_rays<vfloat, true, R, P, shared> or closest_mt_float_one<vfloat, true, P>."""
     ns = ISAS[isa][0]
-    if rays == 2:
-        return (f"_ZN6rayvec{ns}21closest_mt_float_raysINS0_6vfloatELb1ELi2ELNS_9MtPretestE"
+    if rays > 1:
+        return (f"_ZN6rayvec{ns}21closest_mt_float_raysINS0_6vfloatELb1ELi{rays}ELNS_9MtPretestE"
                 f"{PRETEST[pretest]}ELb{int(shared)}EEEvRKNS_14TriangleArraysEjjPKNS_3RayEPNS_3HitE")
     return (f"_ZN6rayvec{ns}20closest_mt_float_oneINS0_6vfloatELb1ELNS_9MtPretestE"
             f"{PRETEST[pretest]}EEEvRKNS_14TriangleArraysEjjRKNS_3RayERNS_3HitE")
@@ -125,19 +126,23 @@ def main():
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("objects", nargs="*", metavar="OBJECT")
     p.add_argument("--isa", choices=sorted(ISAS), default="avx512", help="the kernel unit (default avx512)")
-    p.add_argument("--rays", type=int, choices=(1, 2), default=2, help="rays per triangle load (default 2)")
+    p.add_argument("--rays", type=int, choices=(1, 2, 4, 8),
+                   help="rays per triangle load (default: the one-origin group, 4 ordered, 8 sign)")
     p.add_argument("--pretest", choices=sorted(PRETEST),
                    help="the pre-test form (default: what Intel runs, ordered on AVX-512, sign on AVX2)")
     p.add_argument("--origin", choices=("shared", "separate"), default="shared",
-                   help="pairs: the kernel for rays from one origin (default) or from two")
+                   help="--rays 2: the kernel for rays from one origin (default) or from two")
     p.add_argument("--cpu", action="append", help="llvm-mca -mcpu (repeatable)")
     p.add_argument("--max-cycles", type=float, help="exit 1 when the first model's cycles exceed this")
     a = p.parse_args()
     a.pretest = a.pretest or ("ordered" if a.isa == "avx512" else "sign")
+    a.rays = a.rays or (4 if a.pretest == "ordered" else 8)
+    if a.rays == 8 and a.pretest == "ordered":
+        p.error("--rays 8: the tables with the ordered pre-test group four rays at most (--pretest sign)")
     if not shutil.which("llvm-mca"):
         print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
         sys.exit(77)
-    body = loop_body(instructions(a.objects or [default_object(a.isa)], symbol(a.isa, a.rays, a.pretest, a.origin == "shared")),
+    body = loop_body(instructions(a.objects or [default_object(a.isa)], symbol(a.isa, a.rays, a.pretest, a.rays > 2 or a.origin == "shared")),
                      a.rays)
     tests = ISAS[a.isa][1] * a.rays
     print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "

@@ -8,10 +8,10 @@ void closest_batch(const TriangleKernels& kernels, const TriangleArrays& tris, u
                    const Ray* rays, Hit* hits, std::size_t n) {
   for (uint32_t chunk = begin; chunk < end;) {
     const uint32_t chunk_end = end - chunk > kTriangleChunk ? chunk + kTriangleChunk : end;
-    std::size_t k = 0;
-    if (kernels.closest_pair)  // two rays per triangle load where the table has it
-      for (; k + 2 <= n; k += 2) kernels.closest_pair(tris, chunk, chunk_end, rays + k, hits + k);
-    for (; k < n; ++k) kernels.closest(tris, chunk, chunk_end, rays[k], hits[k]);
+    if (kernels.closest_group)  // several rays per triangle load where the table has it
+      kernels.closest_group(tris, chunk, chunk_end, rays, hits, n);
+    else
+      for (std::size_t k = 0; k < n; ++k) kernels.closest(tris, chunk, chunk_end, rays[k], hits[k]);
     chunk = chunk_end;
   }
 }

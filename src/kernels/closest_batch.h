@@ -4,9 +4,9 @@
 // bandwidth, not arithmetic. Here the range is cut into chunks of kTriangleChunk triangles (8192 × 12 floats
 // = 384 KB, resident in such an L2) and every ray of the batch runs through a chunk before the next chunk is
 // loaded — the batch shares each load, as a ray packet would, while each ray keeps its own kernel call (one
-// ray against W triangles per SIMD step, Sena et al. 2018); where the table has closest_pair, two rays share
-// each step's loads (benchmarks.md#decision-rays-per-triangle-load). Baseline code: it calls the ISA kernels
-// only through the table.
+// ray against W triangles per SIMD step, Sena et al. 2018); where the table has closest_group, several rays
+// share each step's loads (benchmarks.md#decision-rays-per-triangle-load). Baseline code: it calls the ISA
+// kernels only through the table.
 #pragma once
 #include <cstdint>
 

@@ -10,7 +10,7 @@
 // division for t only when a lane survives, u and v tracked per lane, ordered comparisons so NaN never hits,
 // and ties resolved towards the lower triangle id. The float `mt` path (closest_mt_float, mt_float.inl) goes
 // further: precomputed normal, a conservative division-free depth pre-test against the nearest hit
-// of any lane, divisions only for the final hit, and two rays per triangle load (closest_pair).
+// of any lane, divisions only for the final hit, and several rays per triangle load (closest_group).
 // Each choice and what it measured: benchmarks.md#decision-precomputed-normal,
 // #decision-depth-pretest, #decision-early-outs, #decision-fma and #decision-rays-per-triangle-load.
 

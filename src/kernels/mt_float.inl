@@ -288,7 +288,7 @@ RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
       MtBest<V>{V::broadcast(initial), V::broadcast(initial * kMtWiden), zero, zero, zero, zero, false}};
 }
 
-// R rays (1 or 2) against [begin, end): each triangle step is loaded once for all R rays. With
+// R rays (1, 2, 4 or 8) against [begin, end): each triangle step is loaded once for all R rays. With
 // SharedOrigin (the rays' origins equal bit for bit) the origin part of each step is formed once.
 template <class V, bool TminZero, int R, MtPretest P = MtPretest::sign_bits, bool SharedOrigin = false>
 void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
@@ -304,6 +304,9 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
         const MtTriangleLanes<V> at{p};
         if constexpr (SharedOrigin) {
           const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
+      // unrolled: left a loop (g++ does for four rays and more), each ray's lanes and best hit
+      // are reloaded from memory at every step
+#pragma GCC unroll 8
           for (int k = 0; k < R; ++k)
             mt_closest_step<V, TminZero, P>(p, i, q[k].r, o, active, neg_lo[k], q[k].b);
         } else {
@@ -370,25 +373,67 @@ void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, con
     closest_mt_float_one<V, false, P>(T, begin, end, ray, hit);
 }
 
+// R rays from one origin (bit for bit), every one finite.
+template <class V, MtPretest P, int R>
+void closest_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
+                                 Hit* hits) {
+  bool tmin_zero = true;
+  for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
+  if (tmin_zero)
+    closest_mt_float_rays<V, true, R, P, true>(T, begin, end, rays, hits);
+  else
+    closest_mt_float_rays<V, false, R, P, true>(T, begin, end, rays, hits);
+}
+
+// Whether rays[0..n) are all finite and start at rays[0]'s origin, bit for bit.
+RAYVEC_INLINE bool finite_one_origin(const Ray* rays, int n) {
+  for (int k = 0; k < n; ++k)
+    if (!finite_ray(rays[k]) || !same_bits(rays[k].org, rays[0].org)) return false;
+  return true;
+}
+
 template <class V, MtPretest P = MtPretest::sign_bits>
 void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
                            Hit* hits) {
   if (!finite_ray(rays[0]) || !finite_ray(rays[1])) {
     closest_mt_float<V, P>(T, begin, end, rays[0], hits[0]);
     closest_mt_float<V, P>(T, begin, end, rays[1], hits[1]);
-    return;
-  }
-  const bool tmin_zero = rays[0].tmin == 0.0f && rays[1].tmin == 0.0f;
-  if (same_bits(rays[0].org, rays[1].org)) {
-    if (tmin_zero)
-      closest_mt_float_rays<V, true, 2, P, true>(T, begin, end, rays, hits);
-    else
-      closest_mt_float_rays<V, false, 2, P, true>(T, begin, end, rays, hits);
-  } else if (tmin_zero) {
+  } else if (same_bits(rays[0].org, rays[1].org)) {
+    closest_mt_float_one_origin<V, P, 2>(T, begin, end, rays, hits);
+  } else if (rays[0].tmin == 0.0f && rays[1].tmin == 0.0f) {
     closest_mt_float_rays<V, true, 2, P>(T, begin, end, rays, hits);
   } else {
     closest_mt_float_rays<V, false, 2, P>(T, begin, end, rays, hits);
   }
+}
+
+// Rays from one origin go through the kernel in groups of kOneOriginGroup<P> (closest_group_mt_float):
+// the origin part is then formed once for that many rays, and each triangle step is loaded once for
+// them. Eight with the sign pre-test; four with the ordered one, whose eight-ray loop spills more on
+// Intel's port model (benchmarks.md#decision-one-origin-pairs).
+template <MtPretest P>
+inline constexpr int kOneOriginGroup = P == MtPretest::ordered_compares ? 4 : 8;
+
+// rays[0..n): a group of kOneOriginGroup<P> (or four) at a time where they start at one origin, else
+// two at a time, an odd one alone.
+template <class V, MtPretest P = MtPretest::sign_bits>
+void closest_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays, Hit* hits,
+                            std::size_t n) {
+  constexpr int G = kOneOriginGroup<P>;
+  std::size_t k = 0;
+  while (k + 2 <= n) {
+    if (k + G <= n && finite_one_origin(rays + k, G)) {
+      closest_mt_float_one_origin<V, P, G>(T, begin, end, rays + k, hits + k);
+      k += G;
+    } else if (G > 4 && k + 4 <= n && finite_one_origin(rays + k, 4)) {
+      closest_mt_float_one_origin<V, P, 4>(T, begin, end, rays + k, hits + k);
+      k += 4;
+    } else {
+      closest_pair_mt_float<V, P>(T, begin, end, rays + k, hits + k);
+      k += 2;
+    }
+  }
+  if (k < n) closest_mt_float<V, P>(T, begin, end, rays[k], hits[k]);
 }
 
 // One ray's constants of the float `mt` any-hit kernel: its lanes, the pre-test's lower and upper
@@ -440,7 +485,7 @@ template <class V, Intersector I, MtPretest P = MtPretest::sign_bits>
 constexpr TriangleKernels make_kernels(Isa isa) {
   if constexpr (I == Intersector::mt && sizeof(typename V::Scalar) == 4)
     return TriangleKernels{
-        isa, I, V::W, &closest_mt_float<V, P>, &occluded_mt_float<V>, &closest_pair_mt_float<V, P>};
+        isa, I, V::W, &closest_mt_float<V, P>, &occluded_mt_float<V>, &closest_group_mt_float<V, P>};
   else
     return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
 }

@@ -2,6 +2,7 @@
 // whole TriangleSoA, a BVH on each leaf's range; the table is chosen once (triangle_kernels.cpp) and never
 // per ray.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 
@@ -38,10 +39,11 @@ struct TriangleKernels {
   bool (*occluded)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray& ray,
                    const HitFilter* filter);
 
-  // Optional (may be null): `closest` for two rays at once, rays[0..1] and hits[0..1], loading each
-  // triangle step once for both. Same results as two `closest` calls. Used by closest_batch.
-  void (*closest_pair)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray* rays,
-                       Hit* hits) = nullptr;
+  // Optional (may be null): `closest` for rays[0..n) and hits[0..n), each triangle step loaded once
+  // for several rays (two, or four from one origin). Same results as n `closest` calls. Used by
+  // closest_batch.
+  void (*closest_group)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray* rays, Hit* hits,
+                        std::size_t n) = nullptr;
 };
 
 // How the float `mt` closest-hit kernels pre-test a step before its exact depth test (mt_float.inl):
