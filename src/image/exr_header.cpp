@@ -9,6 +9,7 @@
 #include <set>
 #include <utility>
 
+#include "image/image_budget.h"
 #include "io/input_error.h"
 
 namespace rayvec {
@@ -71,6 +72,8 @@ void check_exr_attributes(const std::string& path) {
   for (int headers = 0; headers < 1000000; ++headers) {
     bool empty_header = true;
     std::set<std::string> names;  // of this header
+    int channels = 0;
+    std::int64_t tile[2] = {0, 0};  // the `tiles` attribute's x and y size; 0: not tiled
     for (read_name(name, "name"); !name.empty(); read_name(name, "name")) {
       empty_header = false;
       unsigned char size_bytes[4];
@@ -100,8 +103,10 @@ void check_exr_attributes(const std::string& path) {
                      " bytes");
       if (type == "chlist") {  // channels: name, 16 bytes each, until an empty name; must fill the value
         std::string channel;
-        for (read_name(channel, "channel name"); !channel.empty(); read_name(channel, "channel name"))
+        for (read_name(channel, "channel name"); !channel.empty(); read_name(channel, "channel name")) {
           std::fseek(f.get(), 16, SEEK_CUR);
+          ++channels;
+        }
         if (std::ftell(f.get()) != start + size)
           throw refuse("the channel list does not fill its " + std::to_string(size) + " bytes");
       } else if (type == "preview") {  // width, height, then width*height RGBA bytes
@@ -113,9 +118,17 @@ void check_exr_attributes(const std::string& path) {
         };
         if (8 + 4 * u32(0) * u32(4) != std::uint64_t(size))
           throw refuse("the preview size does not match its bytes");
+      } else if (type == "tiledesc" && name == "tiles") {  // x size, y size (uint32), level mode
+        unsigned char xy[8];
+        if (std::fread(xy, 1, 8, f.get()) != 8) throw refuse("too short for a tile description");
+        for (int a = 0; a < 2; ++a)
+          tile[a] = std::int64_t(std::uint32_t(xy[4 * a]) | std::uint32_t(xy[4 * a + 1]) << 8 |
+                                 std::uint32_t(xy[4 * a + 2]) << 16 | std::uint32_t(xy[4 * a + 3]) << 24);
+        if (tile[0] == 0 || tile[1] == 0) throw refuse("a tile of no pixels");
       }
       std::fseek(f.get(), start + size, SEEK_SET);
     }
+    if (tile[0] > 0) check_declared_tile_size(path, tile[0], tile[1], channels > 0 ? channels : 1);
     if (!multipart || empty_header) return;
   }
 }

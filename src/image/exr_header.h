@@ -17,6 +17,8 @@ bool has_exr_magic(const unsigned char* bytes, std::size_t size);
 // at width x height x 4: one corrupt field in a small file would cost gigabytes. OpenEXRCore skips
 // such values unread and so does not catch it. Of a repeated attribute OpenEXRCore keeps the first and
 // the C++ reader the last, so the two would disagree on the data window the pixels are written to.
+// A tiled header's tile, decoded, must fit the input limit (check_declared_tile_size): the C++ reader
+// allocates a buffer of one tile's pixels when it opens the file.
 // A file that cannot be opened or is shorter than its version field passes (the module reports it).
 void check_exr_attributes(const std::string& path);
 

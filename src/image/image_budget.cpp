@@ -50,6 +50,15 @@ void check_declared_image_size(const std::string& path, std::int64_t width, std:
   check_limit(path, what, decoded_image_bytes(width, height, channels));
 }
 
+void check_declared_tile_size(const std::string& path, std::int64_t width, std::int64_t height,
+                              int channels) {
+  const std::string what = "declares tiles of " + size_text(width, height) + " pixels with " +
+                           std::to_string(channels) + " channels";
+  if (width <= 0 || height <= 0) throw InputError(path, 0, what + ": a tile needs at least one pixel");
+  check_limit(path, what + " (a whole tile is decoded at once)",
+              decoded_image_bytes(width, height, channels));
+}
+
 void check_texture_size(const std::string& path, std::int64_t width, std::int64_t height) {
   check_limit(path, "is a " + size_text(width, height) + " texture, held as RGB floats",
               decoded_image_bytes(width, height, 3));

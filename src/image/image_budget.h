@@ -17,6 +17,11 @@ std::size_t decoded_image_bytes(std::int64_t width, std::int64_t height, int cha
 void check_declared_image_size(const std::string& path, std::int64_t width, std::int64_t height,
                                int channels);
 
+// Throws InputError `path: declares tiles of WxH pixels ...` when a tile of `channels` float
+// channels, decoded, would exceed the input limit: a tiled EXR reader allocates a whole tile's buffer
+// whatever the data window is.
+void check_declared_tile_size(const std::string& path, std::int64_t width, std::int64_t height, int channels);
+
 // Throws InputError `path: is a WxH texture ...` when the image, decoded, grows past the input limit
 // as a texture's three float channels (a grey or two-channel file passes check_declared_image_size
 // with fewer).

@@ -137,6 +137,18 @@ TEST(ImageBudget, ExrAttributeGivenTwiceIsRefused) {
                  "given twice in one header");
 }
 
+// Found by fuzz_image (out of memory): a 1.2 KB tiled EXR whose `tiles` attribute says 7405584x16
+// pixels. OpenEXR's C++ reader allocates a buffer of one whole tile (2.1 GB in halves) when the file
+// is opened, whatever the data window; the tile is now checked against the input limit like an image.
+TEST(ImageBudget, ExrTileLargerThanTheInputLimitIsRefused) {
+  expect_refused(
+      "exr_tile_claims_7405584x16.exr",
+      "exr_tile_claims_7405584x16.exr: declares tiles of 7405584x16 pixels with 9 channels (a whole "
+      "tile is decoded at once)");
+  const Image tiled = read_image(std::string(RAYVEC_TEST_DATA) + "/fuzz_corpus/image/half_tiled_piz.exr");
+  EXPECT_GT(tiled.width, 0) << "a tiled EXR with small tiles still reads";
+}
+
 // The module does not rely on the binary's attribute walk: handed the same file directly, it refuses
 // to decode pixels into a buffer laid out by the header OpenEXRCore read.
 TEST(ImageBudget, ExrModuleRefusesAHeaderItsTwoParsersReadDifferently) {
