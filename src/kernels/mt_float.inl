@@ -453,23 +453,31 @@ RAYVEC_INLINE MtAnyHitRay<V> mt_any_hit_ray(const Ray& ray) {
           V::broadcast(limit)};
 }
 
+// The any-hit tests of one step's numerators `c` (mt_numerator_values, lanes `active`) for the ray
+// `q`: true when a lane holds a hit that `filter` (may be null) accepts.
+template <class V>
+RAYVEC_INLINE bool mt_any_hit_step(const TriangleArrays& T, uint32_t i, MtNumerators<V> c,
+                                   typename V::Mask active, const MtAnyHitRay<V>& q,
+                                   const HitFilter* filter) {
+  c.mask = active & mt_edges(c) & (c.tn < q.hi * c.adet);
+  c.mask = c.mask & (c.tn >= q.lo * c.adet);
+  if (!any(c.mask)) return false;
+  const V t = c.tn / c.adet;
+  const typename V::Mask m = c.mask & (t >= q.r.tmin) & (t < q.tlimit);
+  if (!any(m)) return false;
+  if (!filter) return true;
+  for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
+    if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))])) return true;
+  return false;
+}
+
 // Any hit of the ray `q` (finite origin and direction, no NaN interval) in [begin, end) accepted by
 // `filter` (may be null).
 template <class V>
 RAYVEC_INLINE bool occluded_mt_float_lanes(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                            const MtAnyHitRay<V>& q, const HitFilter* filter) {
   const auto step = [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
-    MtNumerators<V> c = mt_numerators_core<V>(MtTriangleLanes<V>{p}, q.r, active, q.hi);
-    c.mask = c.mask & (c.tn >= q.lo * c.adet);
-    if (!any(c.mask)) return false;
-    const V t = c.tn / c.adet;
-    const typename V::Mask m = c.mask & (t >= q.r.tmin) & (t < q.tlimit);
-    if (!any(m)) return false;
-    if (!filter) return true;
-    for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)
-      if (!filter->ignore(filter->context, T.id[slot_offset(i + unsigned(__builtin_ctz(lanes)))]))
-        return true;
-    return false;
+    return mt_any_hit_step<V>(T, i, mt_numerator_values<V>(MtTriangleLanes<V>{p}, q.r), active, q, filter);
   };
   return mt_steps<V>(T, begin, end, step);
 }
@@ -481,11 +489,77 @@ bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, co
   return occluded_mt_float_lanes<V>(T, begin, end, mt_any_hit_ray<V>(ray), filter);
 }
 
+// R rays from one origin (finite, the origin bit for bit) against [begin, end) for any hit, each
+// triangle step loaded and its origin part formed once for all of them (as closest_mt_float_rays
+// does); *rays[k] with filters[k] (may be null). A ray drops out at its first hit, and the walk ends
+// once every ray has. Returns the bits of the occluded rays.
+template <class V, int R>
+unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                      const Ray* const* rays, const HitFilter* const* filters) {
+  MtAnyHitRay<V> q[R];
+  for (int k = 0; k < R; ++k) q[k] = mt_any_hit_ray<V>(*rays[k]);
+  unsigned done = 0;
+  mt_steps<V>(
+      T, begin, end, [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
+        const MtTriangleLanes<V> at{p};
+        const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
+#pragma GCC unroll 8
+        for (int k = 0; k < R; ++k)
+          if (!(done >> k & 1u) &&
+              mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q[k].r, o), active, q[k], filters[k]))
+            done |= 1u << k;
+        return done == (1u << R) - 1u;
+      });
+  return done;
+}
+
+// Whether *rays[0..n) are all finite and start at rays[0]'s origin, bit for bit.
+RAYVEC_INLINE bool finite_one_origin(const Ray* const* rays, int n) {
+  for (int k = 0; k < n; ++k)
+    if (!finite_ray(*rays[k]) || !same_bits(rays[k]->org, rays[0]->org)) return false;
+  return true;
+}
+
+// Any-hit rays from one origin go through the kernel this many at a time: four on AVX-512, whose
+// eight rays' constants (ten 16-lane vectors a ray) spill, eight elsewhere
+// (benchmarks.md#decision-one-origin-pairs).
+template <class V>
+inline constexpr int kOccludedOneOriginGroup = V::W >= 16 ? 4 : 8;
+
+// *rays[0..n) (n <= kMaxOccludedGroup) for any hit, filters[k] (may be null) for rays[k]: a group of
+// kOccludedOneOriginGroup<V> (or four) at a time where they start at one origin, else one by one.
+// Returns the bits of the occluded rays.
+template <class V>
+unsigned occluded_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                 const Ray* const* rays, const HitFilter* const* filters, int n) {
+  constexpr int G = kOccludedOneOriginGroup<V>;
+  unsigned occluded = 0;
+  int k = 0;
+  while (k < n) {
+    if (k + G <= n && finite_one_origin(rays + k, G)) {
+      occluded |= occluded_mt_float_one_origin<V, G>(T, begin, end, rays + k, filters + k) << k;
+      k += G;
+    } else if (G > 4 && k + 4 <= n && finite_one_origin(rays + k, 4)) {
+      occluded |= occluded_mt_float_one_origin<V, 4>(T, begin, end, rays + k, filters + k) << k;
+      k += 4;
+    } else {
+      occluded |= unsigned(occluded_mt_float<V>(T, begin, end, *rays[k], filters[k])) << k;
+      ++k;
+    }
+  }
+  return occluded;
+}
+
 template <class V, Intersector I, MtPretest P = MtPretest::sign_bits>
 constexpr TriangleKernels make_kernels(Isa isa) {
   if constexpr (I == Intersector::mt && sizeof(typename V::Scalar) == 4)
-    return TriangleKernels{
-        isa, I, V::W, &closest_mt_float<V, P>, &occluded_mt_float<V>, &closest_group_mt_float<V, P>};
+    return TriangleKernels{isa,
+                           I,
+                           V::W,
+                           &closest_mt_float<V, P>,
+                           &occluded_mt_float<V>,
+                           &closest_group_mt_float<V, P>,
+                           &occluded_group_mt_float<V>};
   else
     return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
 }

@@ -20,6 +20,9 @@ struct HitFilter {
   const void* context;
 };
 
+// The most rays one TriangleKernels::occluded_group call takes.
+inline constexpr int kMaxOccludedGroup = 8;
+
 struct TriangleKernels {
   Isa isa;
   Intersector intersector;
@@ -44,6 +47,13 @@ struct TriangleKernels {
   // closest_batch.
   void (*closest_group)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray* rays, Hit* hits,
                         std::size_t n) = nullptr;
+
+  // Optional (may be null): `occluded` for *rays[0..n) with filters[k] (may be null) for *rays[k],
+  // n <= kMaxOccludedGroup, each triangle step loaded once for several rays where they start at one
+  // origin. Returns the bits of the occluded rays (bit k: *rays[k]), as n `occluded` calls would.
+  // Used by occluded_batch.
+  unsigned (*occluded_group)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray* const* rays,
+                             const HitFilter* const* filters, int n) = nullptr;
 };
 
 // How the float `mt` closest-hit kernels pre-test a step before its exact depth test (mt_float.inl):

@@ -283,6 +283,43 @@ TEST_P(KernelEquivalence, BatchFromOneOriginMatchesOneRayAtATime) {
   EXPECT_GT(hits * 4, int(rays.size()));
 }
 
+// Ignores one triangle id (the ray's nearest hit, or none: −2).
+bool ignore_id(const void* context, int32_t tri) { return tri == *static_cast<const int32_t*>(context); }
+
+// occluded_batch with rays from one origin (the any-hit groups) answers as one `occluded` call per
+// ray, each with its own filter: camera rays over more than one chunk, each ray's tmax at its nearest
+// hit, so only that triangle (or a tie) can occlude, and every other ray's filter ignoring it — a
+// filter given to the wrong ray of a group changes the answer.
+TEST_P(KernelEquivalence, OccludedBatchFromOneOriginMatchesOneRayAtATime) {
+  const Param p = GetParam();
+  const TriangleSoA soa(paper_triangles(kTriangleChunk + 300, 5));
+  const TriangleKernels& k = triangle_kernels(p.isa, p.intersector);
+  const RayBatch camera = paper_camera_rays(24);
+  std::vector<Ray> rays;
+  std::vector<int32_t> ignored;
+  for (std::size_t i = 0; i < camera.size(); ++i) {
+    Ray r = camera[i];
+    Hit h;
+    k.closest(soa.arrays(), 0, soa.size(), r, h);
+    if (h.hit() && i % 3 != 2) r.tmax = h.t;
+    rays.push_back(r);
+    ignored.push_back(h.hit() && i % 2 == 1 ? h.tri : -2);
+  }
+  std::vector<HitFilter> filters(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) filters[i] = {&ignore_id, &ignored[i]};
+  std::vector<uint8_t> batch(rays.size());
+  occluded_batch(k, soa.arrays(), 0, soa.size(), rays.data(), batch.data(), batch.size(), filters.data());
+  int occluded = 0, freed = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const bool want = k.occluded(soa.arrays(), 0, soa.size(), rays[i], &filters[i]);
+    ASSERT_EQ(batch[i], want ? 1 : 0) << "ray " << i;
+    occluded += want;
+    freed += !want && ignored[i] >= 0;
+  }
+  EXPECT_GT(occluded * 4, int(rays.size()));
+  EXPECT_GT(freed * 8, int(rays.size())) << "the filters should clear some rays";
+}
+
 TEST_P(KernelEquivalence, RandomTrianglesMatchScalar) { check(random_scene()); }
 TEST_P(KernelEquivalence, ClosedSphereMatchesScalar) { check(sphere_scene()); }
 TEST_P(KernelEquivalence, EdgeAimedGridMatchesScalar) { check(grid_scene()); }
