@@ -35,7 +35,7 @@ struct Options {
   bool quick = false, json = false, no_baselines = false, no_scaling = false;
   int threads = 0;
   int side_divisor = 0;  // testing: overrides every divisor and repeats nothing
-  std::string isa = "auto", models;
+  std::string isa = "auto", models, pretest = "auto";
 };
 
 double gtests(double tests, const Timing& t) { return t.seconds > 0 ? tests / t.seconds / 1e9 : 0; }
@@ -155,9 +155,10 @@ void print_json(const Options& o, Isa isa, int threads, int ranks, uint32_t tabl
                 uint32_t scaling_divisor, const std::vector<Table1Result>& table,
                 const std::vector<ScalingResult>& scaling, uint64_t mismatches) {
   std::printf(
-      "{\"cpu\":%s,\"isa\":%s,\"threads\":%d,\"ranks\":%d,\"quick\":%s,\"table1_side_divisor\":%u,"
-      "\"scaling_side_divisor\":%u,\"table1\":[",
-      json_string(cpu_features().brand).c_str(), json_string(isa_name(isa)).c_str(), threads, ranks,
+      "{\"cpu\":%s,\"isa\":%s,\"mt_pretest\":%s,\"threads\":%d,\"ranks\":%d,\"quick\":%s,"
+      "\"table1_side_divisor\":%u,\"scaling_side_divisor\":%u,\"table1\":[",
+      json_string(cpu_features().brand).c_str(), json_string(isa_name(isa)).c_str(),
+      json_string(mt_pretest_name(mt_pretest_in_use(isa))).c_str(), threads, ranks,
       o.quick ? "true" : "false", table_divisor, scaling_divisor);
   for (std::size_t i = 0; i < table.size(); ++i) {
     const Table1Result& r = table[i];
@@ -218,6 +219,12 @@ int run(const Options& o) {
   if (const std::string err = resolve_isa(o.isa, isa); !err.empty()) throw InputError("--isa: " + err);
   check_threads_option(o.threads);
   if (o.side_divisor < 0) throw InputError("--side-divisor: must be 1 or more");
+  if (o.pretest == "sign")
+    set_mt_pretest(MtPretest::sign_bits);
+  else if (o.pretest == "ordered")
+    set_mt_pretest(MtPretest::ordered_compares);
+  else if (o.pretest != "auto")
+    throw InputError("--pretest: '" + o.pretest + "' is not auto, sign or ordered");
   const auto models = chosen_models(o.models);
   // Under mpirun every rank has checked the options by now: a bad one stops every rank here, with
   // its message once. The scaling run's thread counts must be the same on every rank: the fewest
@@ -235,9 +242,12 @@ int run(const Options& o) {
 
   if (!o.json && ranks.root()) {
     std::printf("rayvec bench paper: Sena et al. (2018), Table 1 and section 5.2, on a generated scene\n");
-    std::printf("cpu: %s\nisa: %s (%d floats per step)\nthreads: %d (Table 1 runs on one thread)\n",
-                cpu_features().brand.c_str(), isa_name(isa), triangle_kernels(isa, Intersector::mt).width,
-                threads);
+    std::printf(
+        "cpu: %s\nisa: %s (%d floats per step; mt pre-test: %s%s)\nthreads: %d (Table 1 runs on one "
+        "thread)\n",
+        cpu_features().brand.c_str(), isa_name(isa), triangle_kernels(isa, Intersector::mt).width,
+        mt_pretest_name(mt_pretest_in_use(isa)), o.pretest == "auto" ? ", this CPU's default" : ", --pretest",
+        threads);
     if (ranks.distributed())
       std::printf(
           "ranks: %d (every rank traces a contiguous share of each row's rays; cpu and isa are rank "
@@ -305,6 +315,9 @@ void register_bench_paper_command(Command& bench) {
       .option("--models", o.models, "only these Table 1 rows, e.g. mod2,mod7")
       .flag("--no-baselines", o.no_baselines, "skip original and optimized (vectorized only)")
       .flag("--no-scaling", o.no_scaling, "skip the thread-scaling run")
+      .option("--pretest", o.pretest,
+              "tuning: the mt kernels' pre-test, auto (this CPU's default), sign or ordered (the same hits; "
+              "docs/benchmarks.md#decision-sign-pretest)")
       .option("--side-divisor", o.side_divisor,
               "testing: divide every image side by this and time each run once")
       .footer(

@@ -18,8 +18,18 @@ const char* mt_pretest_name(MtPretest pretest) {
   return pretest == MtPretest::ordered_compares ? "ordered compares" : "sign bits";
 }
 
+namespace {
+std::optional<MtPretest> g_chosen_pretest;
+}  // namespace
+
+void set_mt_pretest(std::optional<MtPretest> pretest) { g_chosen_pretest = pretest; }
+
+MtPretest mt_pretest_in_use(Isa isa) {
+  return g_chosen_pretest ? *g_chosen_pretest : default_mt_pretest(isa, cpu_features().vendor);
+}
+
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector) {
-  return triangle_kernels(isa, intersector, default_mt_pretest(isa, cpu_features().vendor));
+  return triangle_kernels(isa, intersector, mt_pretest_in_use(isa));
 }
 
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector, MtPretest pretest) {

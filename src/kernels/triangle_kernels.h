@@ -4,6 +4,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 #include "kernels/intersector.h"
@@ -69,8 +70,15 @@ MtPretest default_mt_pretest(Isa isa, std::string_view vendor);
 // "sign bits" | "ordered compares" (what `rayvec info` prints).
 const char* mt_pretest_name(MtPretest pretest);
 
-// The table for an ISA the CPU supports (checked by the caller through isa_supported), with the
-// running CPU's default_mt_pretest.
+// A tuning switch for measuring both pre-tests on one CPU (`bench paper --pretest`): from this call on,
+// the tables triangle_kernels(isa, intersector) hands out use `pretest` for every ISA; nullopt restores
+// each ISA's default. Set before any accelerator is built (it is not synchronised with tracing).
+void set_mt_pretest(std::optional<MtPretest> pretest);
+// The pre-test triangle_kernels(isa, intersector) uses for `isa` on this CPU.
+MtPretest mt_pretest_in_use(Isa isa);
+
+// The table for an ISA the CPU supports (checked by the caller through isa_supported), with
+// mt_pretest_in_use (the running CPU's default_mt_pretest unless set_mt_pretest chose one).
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector);
 // The same with the `mt` pre-test chosen (other intersectors ignore it).
 const TriangleKernels& triangle_kernels(Isa isa, Intersector intersector, MtPretest pretest);

@@ -43,6 +43,37 @@ TEST(BenchPaper, JsonHasSeventeenRowsAndScaling) {
   EXPECT_NE(r.out.find("\"mismatches\":0}\n"), std::string::npos);
 }
 
+// --pretest chooses the mt kernels' pre-test for the run (a tuning switch for comparing the two on
+// one CPU): it is named in the header and the JSON, and both give the same hits (counted here as the
+// rays where mt's triangle differs from paper's).
+TEST(BenchPaper, PretestSwitchIsReportedAndKeepsTheHits) {
+  std::string differences[2];
+  const char* names[2] = {"sign", "ordered"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string args =
+        std::string("bench paper --models mod2,mod7 --no-baselines --no-scaling --side-divisor 16 ") +
+        "--pretest " + names[k];
+    const auto text = test::run_cli(args);
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_NE(text.out.find(k == 0 ? "mt pre-test: sign bits, --pretest"
+                                   : "mt pre-test: ordered compares, --pretest"),
+              std::string::npos)
+        << text.out;
+    const auto json = test::run_cli(args + " --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    EXPECT_NE(json.out.find(k == 0 ? "\"mt_pretest\":\"sign bits\"" : "\"mt_pretest\":\"ordered compares\""),
+              std::string::npos);
+    for (std::size_t at = json.out.find("\"mt_differences\":"); at != std::string::npos;
+         at = json.out.find("\"mt_differences\":", at + 1))
+      differences[k] += json.out.substr(at, json.out.find_first_of(",}", at) - at) + ";";
+  }
+  EXPECT_EQ(test::count_of(differences[0], ";"), 2) << differences[0];
+  EXPECT_EQ(differences[0], differences[1]);
+  const auto bad = test::run_cli("bench paper --models mod2 --side-divisor 128 --pretest fastest");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--pretest: 'fastest' is not auto, sign or ordered"), std::string::npos) << bad.err;
+}
+
 TEST(BenchPaper, UnknownModelIsAUsageError) {
   const auto r = test::run_cli("bench paper --models mod99 --side-divisor 128");
   EXPECT_EQ(r.status, 2);
