@@ -47,8 +47,11 @@ def symbol(isa, rays, pretest, shared):
 
 def instructions(objects, sym):
     for obj in objects:
-        out = subprocess.run(["objdump", "-d", "--no-show-raw-insn", "-M", "intel", f"--disassemble={sym}", obj],
-                             check=True, capture_output=True, text=True).stdout
+        run = subprocess.run(["objdump", "-d", "--no-show-raw-insn", "-M", "intel", f"--disassemble={sym}", obj],
+                             capture_output=True, text=True)
+        if run.returncode != 0:
+            sys.exit(f"port_model: objdump cannot read {obj}: {run.stderr.strip()}")
+        out = run.stdout
         code = disassembly(out)
         if code:
             return code

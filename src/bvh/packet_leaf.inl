@@ -8,7 +8,7 @@
 //
 // Exactness: each lane gets exactly what the single-ray `mt` kernel (closest_mt_float) gives for
 // its ray on the same slot range — same triangle id, bit-identical t, u, v, ties to the lowest id.
-// The arithmetic is mt_numerator_values and the ordered tests of mt_numerators_core (only the
+// The arithmetic is mt_numerator_values and the ordered tests of mt_any_hit_step's pre-test (only the
 // triangle comes broadcast instead of loaded, its edges from rows subtracted once per leaf; the
 // brute-force kernel's conservative one-mask sign pre-test skips the steps no lane can pass;
 // benchmarks.md#decision-packet-leaf-kernel), then the same exact stage t = tn/|det| with
@@ -59,7 +59,7 @@ RAYVEC_INLINE void mt_leaf_edges(const TriangleArrays& T, uint32_t begin, uint32
   }
 }
 
-// One triangle, slot i, broadcast to every lane (the `at` of mt_numerators_core), its edges from
+// One triangle, slot i, broadcast to every lane (the `at` of mt_numerator_values), its edges from
 // the leaf's edge rows.
 template <class V>
 struct MtTriangleBroadcast {

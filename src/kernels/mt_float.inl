@@ -121,17 +121,6 @@ RAYVEC_INLINE typename V::Mask mt_edges(const MtNumerators<V>& c) {
   return (c.un <= zero) & (c.vn >= zero) & (c.vn - c.un <= c.adet);
 }
 
-// mt_numerator_values plus `mask` = the closed edge tests and the upper depth pre-test
-// tn < hi·|det|, but NOT the lower one (tmin), which the callers add (the any-hit loop; the packet
-// kernel per lane). |det| = 0 fails the pre-test (tn >= 0 and tn < 0 cannot both hold; inf·0 is NaN).
-template <class V, class At>
-RAYVEC_INLINE MtNumerators<V> mt_numerators_core(const At& at, const RayLanes<V>& r, typename V::Mask active,
-                                                 V hi) {
-  MtNumerators<V> out = mt_numerator_values<V>(at, r);
-  out.mask = active & mt_edges(out) & (out.tn < hi * out.adet);
-  return out;
-}
-
 // The pre-test with ONE mask instruction (MtPretest::sign_bits; benchmarks.md#decision-sign-pretest): on
 // AMD's Zen 5 every instruction that writes a mask register competes with the 19 multiplies/FMAs of
 // a step for the same two pipes, while adds and bitwise ops have pipes of their own. So the five
@@ -303,9 +292,9 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
       T, begin, end, [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
         const MtTriangleLanes<V> at{p};
         if constexpr (SharedOrigin) {
+          // the rays' steps unrolled: left a loop (g++ does for four rays and more), each ray's lanes
+          // and best hit are reloaded from memory at every step
           const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
-      // unrolled: left a loop (g++ does for four rays and more), each ray's lanes and best hit
-      // are reloaded from memory at every step
 #pragma GCC unroll 8
           for (int k = 0; k < R; ++k)
             mt_closest_step<V, TminZero, P>(p, i, q[k].r, o, active, neg_lo[k], q[k].b);
@@ -373,69 +362,6 @@ void closest_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, con
     closest_mt_float_one<V, false, P>(T, begin, end, ray, hit);
 }
 
-// R rays from one origin (bit for bit), every one finite.
-template <class V, MtPretest P, int R>
-void closest_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
-                                 Hit* hits) {
-  bool tmin_zero = true;
-  for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
-  if (tmin_zero)
-    closest_mt_float_rays<V, true, R, P, true>(T, begin, end, rays, hits);
-  else
-    closest_mt_float_rays<V, false, R, P, true>(T, begin, end, rays, hits);
-}
-
-// Whether rays[0..n) are all finite and start at rays[0]'s origin, bit for bit.
-RAYVEC_INLINE bool finite_one_origin(const Ray* rays, int n) {
-  for (int k = 0; k < n; ++k)
-    if (!finite_ray(rays[k]) || !same_bits(rays[k].org, rays[0].org)) return false;
-  return true;
-}
-
-template <class V, MtPretest P = MtPretest::sign_bits>
-void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
-                           Hit* hits) {
-  if (!finite_ray(rays[0]) || !finite_ray(rays[1])) {
-    closest_mt_float<V, P>(T, begin, end, rays[0], hits[0]);
-    closest_mt_float<V, P>(T, begin, end, rays[1], hits[1]);
-  } else if (same_bits(rays[0].org, rays[1].org)) {
-    closest_mt_float_one_origin<V, P, 2>(T, begin, end, rays, hits);
-  } else if (rays[0].tmin == 0.0f && rays[1].tmin == 0.0f) {
-    closest_mt_float_rays<V, true, 2, P>(T, begin, end, rays, hits);
-  } else {
-    closest_mt_float_rays<V, false, 2, P>(T, begin, end, rays, hits);
-  }
-}
-
-// Rays from one origin go through the kernel in groups of kOneOriginGroup<P> (closest_group_mt_float):
-// the origin part is then formed once for that many rays, and each triangle step is loaded once for
-// them. Eight with the sign pre-test; four with the ordered one, whose eight-ray loop spills more on
-// Intel's port model (benchmarks.md#decision-one-origin-pairs).
-template <MtPretest P>
-inline constexpr int kOneOriginGroup = P == MtPretest::ordered_compares ? 4 : 8;
-
-// rays[0..n): a group of kOneOriginGroup<P> (or four) at a time where they start at one origin, else
-// two at a time, an odd one alone.
-template <class V, MtPretest P = MtPretest::sign_bits>
-void closest_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays, Hit* hits,
-                            std::size_t n) {
-  constexpr int G = kOneOriginGroup<P>;
-  std::size_t k = 0;
-  while (k + 2 <= n) {
-    if (k + G <= n && finite_one_origin(rays + k, G)) {
-      closest_mt_float_one_origin<V, P, G>(T, begin, end, rays + k, hits + k);
-      k += G;
-    } else if (G > 4 && k + 4 <= n && finite_one_origin(rays + k, 4)) {
-      closest_mt_float_one_origin<V, P, 4>(T, begin, end, rays + k, hits + k);
-      k += 4;
-    } else {
-      closest_pair_mt_float<V, P>(T, begin, end, rays + k, hits + k);
-      k += 2;
-    }
-  }
-  if (k < n) closest_mt_float<V, P>(T, begin, end, rays[k], hits[k]);
-}
-
 // One ray's constants of the float `mt` any-hit kernel: its lanes, the pre-test's lower and upper
 // factors and the exact upper bound, formed once per ray — by each table call, or once per
 // traversal when a BVH unit calls the leaf kernel directly with these lanes in memory
@@ -454,7 +380,10 @@ RAYVEC_INLINE MtAnyHitRay<V> mt_any_hit_ray(const Ray& ray) {
 }
 
 // The any-hit tests of one step's numerators `c` (mt_numerator_values, lanes `active`) for the ray
-// `q`: true when a lane holds a hit that `filter` (may be null) accepts.
+// `q`: true when a lane holds a hit that `filter` (may be null) accepts. First the division-free
+// pre-test as ordered compares — closed edges, lo·|det| <= t·|det| < hi·|det| (|det| = 0 fails:
+// t·|det| >= 0 and < 0 cannot both hold; NaN fails every compare) — then, for a step where a lane
+// passes, the exact tmin <= t < tlimit.
 template <class V>
 RAYVEC_INLINE bool mt_any_hit_step(const TriangleArrays& T, uint32_t i, MtNumerators<V> c,
                                    typename V::Mask active, const MtAnyHitRay<V>& q,
@@ -487,79 +416,4 @@ bool occluded_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, co
                        const HitFilter* filter) {
   if (!finite_ray(ray)) return false;
   return occluded_mt_float_lanes<V>(T, begin, end, mt_any_hit_ray<V>(ray), filter);
-}
-
-// R rays from one origin (finite, the origin bit for bit) against [begin, end) for any hit, each
-// triangle step loaded and its origin part formed once for all of them (as closest_mt_float_rays
-// does); *rays[k] with filters[k] (may be null). A ray drops out at its first hit, and the walk ends
-// once every ray has. Returns the bits of the occluded rays.
-template <class V, int R>
-unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end,
-                                      const Ray* const* rays, const HitFilter* const* filters) {
-  MtAnyHitRay<V> q[R];
-  for (int k = 0; k < R; ++k) q[k] = mt_any_hit_ray<V>(*rays[k]);
-  unsigned done = 0;
-  mt_steps<V>(
-      T, begin, end, [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
-        const MtTriangleLanes<V> at{p};
-        const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
-#pragma GCC unroll 8
-        for (int k = 0; k < R; ++k)
-          if (!(done >> k & 1u) &&
-              mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q[k].r, o), active, q[k], filters[k]))
-            done |= 1u << k;
-        return done == (1u << R) - 1u;
-      });
-  return done;
-}
-
-// Whether *rays[0..n) are all finite and start at rays[0]'s origin, bit for bit.
-RAYVEC_INLINE bool finite_one_origin(const Ray* const* rays, int n) {
-  for (int k = 0; k < n; ++k)
-    if (!finite_ray(*rays[k]) || !same_bits(rays[k]->org, rays[0]->org)) return false;
-  return true;
-}
-
-// Any-hit rays from one origin go through the kernel this many at a time: four on AVX-512, whose
-// eight rays' constants (ten 16-lane vectors a ray) spill, eight elsewhere
-// (benchmarks.md#decision-one-origin-pairs).
-template <class V>
-inline constexpr int kOccludedOneOriginGroup = V::W >= 16 ? 4 : 8;
-
-// *rays[0..n) (n <= kMaxOccludedGroup) for any hit, filters[k] (may be null) for rays[k]: a group of
-// kOccludedOneOriginGroup<V> (or four) at a time where they start at one origin, else one by one.
-// Returns the bits of the occluded rays.
-template <class V>
-unsigned occluded_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end,
-                                 const Ray* const* rays, const HitFilter* const* filters, int n) {
-  constexpr int G = kOccludedOneOriginGroup<V>;
-  unsigned occluded = 0;
-  int k = 0;
-  while (k < n) {
-    if (k + G <= n && finite_one_origin(rays + k, G)) {
-      occluded |= occluded_mt_float_one_origin<V, G>(T, begin, end, rays + k, filters + k) << k;
-      k += G;
-    } else if (G > 4 && k + 4 <= n && finite_one_origin(rays + k, 4)) {
-      occluded |= occluded_mt_float_one_origin<V, 4>(T, begin, end, rays + k, filters + k) << k;
-      k += 4;
-    } else {
-      occluded |= unsigned(occluded_mt_float<V>(T, begin, end, *rays[k], filters[k])) << k;
-      ++k;
-    }
-  }
-  return occluded;
-}
-
-template <class V, Intersector I, MtPretest P = MtPretest::sign_bits>
-constexpr TriangleKernels make_kernels(Isa isa) {
-  if constexpr (I == Intersector::mt && sizeof(typename V::Scalar) == 4)
-    return TriangleKernels{isa,
-                           I,
-                           V::W,
-                           &closest_mt_float<V, P>,
-                           &occluded_mt_float<V>,
-                           &closest_group_mt_float<V, P>,
-                           &occluded_group_mt_float<V>};
-  else
-    return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
 }
