@@ -27,7 +27,7 @@ import sys
 import tempfile
 
 PRETEST = {"sign": 0, "ordered": 1}
-# per ISA: its namespace as mangled, the lanes of a step, its kernel unit's object in build/
+# per ISA: its namespace as mangled, the lanes of a step
 ISAS = {"avx512": ("6avx512", 16), "avx2": ("4avx2", 8)}
 
 
@@ -145,8 +145,8 @@ def main():
     if not shutil.which("llvm-mca"):
         print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
         sys.exit(77)
-    body = loop_body(instructions(a.objects or [default_object(a.isa)], symbol(a.isa, a.rays, a.pretest, a.rays > 2 or a.origin == "shared")),
-                     a.rays)
+    sym = symbol(a.isa, a.rays, a.pretest, a.rays > 2 or a.origin == "shared")
+    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays)
     tests = ISAS[a.isa][1] * a.rays
     print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "
           f"({a.isa}, {a.rays} ray(s){', ' + a.origin + ' origin' if a.rays == 2 else ''}, {a.pretest} pre-test)")

@@ -7,14 +7,14 @@
 // float `mt` or `watertight` table of this ISA a leaf is intersected by a ray-packet kernel
 // (packet_leaf.inl, watertight_packet_leaf.inl: one triangle against all lanes per step, exactly the
 // single-ray answer per lane); other intersectors, and `mt` packets mixing tmin = 0 with tmin != 0,
-// intersect a leaf ray by ray with the triangle kernel table (two lanes per call through closest_pair was
-// measured slower than one: packets 1.1x single rays instead of 1.5x). When only kSingleRayLanes or fewer
-// lanes remain active in a subtree, the packet has diverged: those lanes finish that subtree by single-ray
-// traversal (bvh_closest_from). Uniform forward packets first test every child of a node against the hull of
-// their lanes (PacketChildren below) and then only the children it passes lane by lane. Box tests: packets
-// whose lanes all have tmin >= 0 (camera rays) take the forward test (PK::Forward: one FMA a slab, the
-// widening folded into the reciprocals as in the single-ray forward test, and without per-lane blends when
-// all lanes share the direction signs); the others take the general test (PK::hits), as
+// intersect a leaf ray by ray with the triangle kernel table (two lanes per call through the table's pair
+// kernel measured slower than one: packets 1.1x single rays instead of 1.5x). When only kSingleRayLanes or
+// fewer lanes remain active in a subtree, the packet has diverged: those lanes finish that subtree by
+// single-ray traversal (bvh_closest_from). Uniform forward packets first test every child of a node against
+// the hull of their lanes (PacketChildren below) and then only the children it passes lane by lane. Box
+// tests: packets whose lanes all have tmin >= 0 (camera rays) take the forward test (PK::Forward: one FMA a
+// slab, the widening folded into the reciprocals as in the single-ray forward test, and without per-lane
+// blends when all lanes share the direction signs); the others take the general test (PK::hits), as
 // single_ray_traversal.inl's tmin < 0 rays do. Included by the ISA units after single_ray_traversal.inl,
 // packet_leaf.inl and watertight_packet_leaf.inl (kThisIsa, vfloat of P lanes).
 

@@ -44,8 +44,8 @@ struct TriangleKernels {
                    const HitFilter* filter);
 
   // Optional (may be null): `closest` for rays[0..n) and hits[0..n), each triangle step loaded once
-  // for several rays (two, or four from one origin). Same results as n `closest` calls. Used by
-  // closest_batch.
+  // for several rays (two, or a group of four or eight from one origin). Same results as n `closest`
+  // calls. Used by closest_batch.
   void (*closest_group)(const TriangleArrays& tris, uint32_t begin, uint32_t end, const Ray* rays, Hit* hits,
                         std::size_t n) = nullptr;
 
