@@ -1,6 +1,7 @@
-// Image files: PNG through libpng (png_file.cpp), EXR through OpenEXR in a module loaded only when an
-// EXR is read or written (exr_file.cpp), every other format through OpenImageIO in a module loaded
-// only when such a file is read (oiio_module.cpp).
+// Image files: PNG through libpng (png_file.cpp), JPEG through libjpeg (jpeg_file.cpp), EXR through
+// OpenEXR in a module loaded only when an EXR is read or written (exr_file.cpp), every other format
+// (and CMYK JPEGs) through OpenImageIO in a module loaded only when such a file is read
+// (oiio_module.cpp).
 // The format is told by the file's first bytes, not its name. Writes are encoded in memory and
 // committed through AtomicFile, so an interrupted render leaves nothing.
 #include "image/image_io.h"
@@ -11,11 +12,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <system_error>
 
 #include "image/exr_file.h"
 #include "image/exr_header.h"
 #include "image/image_budget.h"
+#include "image/jpeg_file.h"
 #include "image/oiio_module.h"
 #include "image/png_file.h"
 #include "image/srgb8.h"
@@ -40,7 +43,7 @@ std::vector<std::uint8_t> encode_png_pixels(const Image& image) {
   return bytes;
 }
 
-enum class Format { png, exr, other };
+enum class Format { png, jpeg, exr, other };
 
 Format sniff(const std::string& path) {
   std::error_code ec;  // not the throwing form: a name too long for the file system is bad input
@@ -55,6 +58,7 @@ Format sniff(const std::string& path) {
     std::fclose(f);
   }
   if (has_png_signature(head, got)) return Format::png;
+  if (has_jpeg_signature(head, got)) return Format::jpeg;
   if (has_exr_magic(head, got)) return Format::exr;
   return Format::other;
 }
@@ -63,6 +67,12 @@ Image read_any(const std::string& path, bool* encoded) {
   switch (sniff(path)) {
     case Format::png: *encoded = true; return read_png(path);
     case Format::exr: *encoded = false; return read_exr(path);
+    case Format::jpeg:
+      if (std::optional<Image> image = read_jpeg(path)) {
+        *encoded = true;
+        return std::move(*image);
+      }
+      break;
     case Format::other: break;
   }
   return read_with_oiio_module(path, encoded);

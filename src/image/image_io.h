@@ -1,9 +1,10 @@
 // Image files. Written:
 //   .exr — linear float, every channel of the Image (R G B and any AOVs), plus metadata.
 //   .png — the first three channels, sRGB-encoded (IEC 61966-2-1), 8 bits, clamped to [0, 1].
-// Read: PNG directly (libpng) and EXR through OpenEXR in a module loaded on first use (exr_file.h),
-// told by their first bytes; any other format OpenImageIO knows through another such module
-// (oiio_module.h). Every reader checks the declared size before decoding (image_budget.h).
+// Read: PNG (libpng) and JPEG (libjpeg) directly and EXR through OpenEXR in a module loaded on first
+// use (exr_file.h), told by their first bytes; any other format OpenImageIO knows (and CMYK JPEGs)
+// through another such module (oiio_module.h). Every reader checks the declared size before
+// decoding (image_budget.h).
 #pragma once
 #include <string>
 #include <utility>

@@ -32,13 +32,13 @@ std::string shell_output(const std::string& cmd) {
 }
 
 // Every library `ldd` lists for the binary must be one of these (the closure of what rayvec links:
-// libc, C++ runtime, OpenMP, GMP, tinyobjloader, libpng with zlib). A new entry costs every command
+// libc, C++ runtime, OpenMP, GMP, tinyobjloader, libpng with zlib, libjpeg). A new entry costs every command
 // its loading time: measure it with scripts/startup_cost.sh and load it on demand if it is heavy,
 // before adding it here — as OpenImageIO (librayvec_oiio.so), OpenEXR with Imath
 // (librayvec_exr.so), MPI (librayvec_mpi.so) and the Embree rival with TBB (librayvec_embree.so) are.
 constexpr std::string_view kAllowed[] = {
     "linux-vdso", "ld-linux-x86-64", "libc", "libm", "libstdc++", "libgcc_s", "libgomp", "libgmp",
-    "libtinyobjloader", "libz", "libpng16",
+    "libtinyobjloader", "libz", "libpng16", "libjpeg",
     // the sanitizer runtimes and GMP's C++ layer, present in the instrumented build only
     "libasan", "libubsan", "libgmpxx"};
 
@@ -95,6 +95,12 @@ TEST(Startup, OpenImageIoModuleLoadsOnlyForOtherFormats) {
   EXPECT_EQ(status, 0);
   EXPECT_FALSE(module_loaded_by("--help", &status));
   EXPECT_TRUE(module_loaded_by("compare '" + dir + "/a.ppm' '" + dir + "/a.ppm'", &status));
+  EXPECT_EQ(status, 0);
+  // JPEG, the texture format of most OBJ files, through libjpeg; only CMYK ones need OpenImageIO
+  const std::string jpeg = std::string(RAYVEC_TEST_DATA) + "/images/jpeg/";
+  EXPECT_FALSE(module_loaded_by("compare '" + jpeg + "prog.jpg' '" + jpeg + "prog.jpg'", &status));
+  EXPECT_EQ(status, 0);
+  EXPECT_TRUE(module_loaded_by("compare '" + jpeg + "cmyk.jpg' '" + jpeg + "cmyk.jpg'", &status));
   EXPECT_EQ(status, 0);
 }
 
