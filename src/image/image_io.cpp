@@ -133,12 +133,14 @@ Image read_texture(const std::string& path) {
   check_texture_size(path, raw.width, raw.height);
   Image rgb(raw.width, raw.height, {"R", "G", "B"});
   const int n = raw.nchannels();
-  for (int y = 0; y < raw.height; ++y)
-    for (int x = 0; x < raw.width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        const float v = raw.at(x, y, n >= 3 ? c : 0);
-        rgb.at(x, y, c) = encoded ? srgb_decode(v) : v;
-      }
+  const std::size_t count = std::size_t(raw.width) * std::size_t(raw.height);
+  if (encoded) {
+    srgb_decode_pixels(raw.pixels.data(), n, count, rgb.pixels.data());
+  } else {
+    for (std::size_t p = 0; p < count; ++p)
+      for (std::size_t c = 0; c < 3; ++c)
+        rgb.pixels[p * 3 + c] = raw.pixels[p * std::size_t(n) + (n >= 3 ? c : 0)];
+  }
   return rgb;
 }
 

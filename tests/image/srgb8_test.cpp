@@ -6,9 +6,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "image/image_io.h"
+#include "image/png_file.h"
+#include "test_support.h"
 
 namespace rayvec {
 namespace {
@@ -81,6 +84,38 @@ TEST(Srgb8, PixelsGiveTheBytesOfEachChannel) {
         ASSERT_EQ(rgb[p * 3 + c], srgb8(c < channels ? linear[p * channels + c] : 0.0f))
             << channels << " channels, pixel " << p << ", channel " << c;
   }
+}
+
+// Decoding texture values by the table is the formula bit for bit: every 8-bit code, values that are
+// not codes (16-bit, out of range) by the formula, grey widened; and a PNG of all codes read as a
+// texture.
+TEST(Srgb8, TextureDecodeEqualsTheFormula) {
+  std::vector<float> values;
+  for (int k = 0; k < 256; ++k) values.push_back(float(k) * (1.0f / 255.0f));
+  for (const float v : {0.5f, 1000.0f / 65535.0f, 1e-6f, 1.5f, -0.25f, -0.0f, 2.0f / 255.0f + 1e-7f})
+    values.push_back(v);
+  for (const int channels : {1, 3, 4}) {
+    std::vector<float> in(values.size() * std::size_t(channels));
+    for (std::size_t i = 0; i < in.size(); ++i) in[i] = values[(i * 5) % values.size()];
+    const std::size_t count = values.size();
+    std::vector<float> rgb(count * 3);
+    srgb_decode_pixels(in.data(), channels, count, rgb.data());
+    for (std::size_t p = 0; p < count; ++p)
+      for (int c = 0; c < 3; ++c) {
+        const float v = in[p * std::size_t(channels) + (channels >= 3 ? std::size_t(c) : 0)];
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(rgb[p * 3 + std::size_t(c)]),
+                  std::bit_cast<std::uint32_t>(srgb_decode(v)))
+            << channels << " channels, value " << v;
+      }
+  }
+  std::vector<std::uint8_t> rgb(256 * 3);
+  for (int k = 0; k < 256; ++k)
+    rgb[std::size_t(k) * 3] = rgb[std::size_t(k) * 3 + 1] = rgb[std::size_t(k) * 3 + 2] = std::uint8_t(k);
+  const std::string path = test::temp_dir("srgb8_texture") + "/codes.png";
+  const std::vector<std::uint8_t> png = encode_png_rgb8(256, 1, rgb, {});
+  test::write_file(path, std::string(png.begin(), png.end()));
+  const Image tex = read_texture(path);
+  for (int k = 0; k < 256; ++k) EXPECT_EQ(tex.at(k, 0, 1), srgb_decode(float(k) * (1.0f / 255.0f))) << k;
 }
 
 }  // namespace
