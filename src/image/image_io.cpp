@@ -127,21 +127,11 @@ Image read_image(const std::string& path, bool* encoded) {
   return read_any(path, encoded ? encoded : &unused);
 }
 
-Image read_texture(const std::string& path) {
+Texture read_texture(const std::string& path) {
   bool encoded = false;
   const Image raw = read_any(path, &encoded);
   check_texture_size(path, raw.width, raw.height);
-  Image rgb(raw.width, raw.height, {"R", "G", "B"});
-  const int n = raw.nchannels();
-  const std::size_t count = std::size_t(raw.width) * std::size_t(raw.height);
-  if (encoded) {
-    srgb_decode_pixels(raw.pixels.data(), n, count, rgb.pixels.data());
-  } else {
-    for (std::size_t p = 0; p < count; ++p)
-      for (std::size_t c = 0; c < 3; ++c)
-        rgb.pixels[p * 3 + c] = raw.pixels[p * std::size_t(n) + (n >= 3 ? c : 0)];
-  }
-  return rgb;
+  return Texture(raw, encoded);
 }
 
 }  // namespace rayvec

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/texture.h"
 
 namespace rayvec {
 
@@ -37,10 +38,10 @@ void require_image_writer(const std::string& path);
 Image read_image(const std::string& path);
 Image read_image(const std::string& path, bool* encoded);
 
-// Reads a texture as linear RGB: 8- and 16-bit files are taken as sRGB-encoded and decoded, float
-// files (EXR, HDR) as linear; grey images are widened to RGB and alpha is dropped. The RGB floats
-// count against the input limit (image_budget.h), whatever the file stores.
-Image read_texture(const std::string& path);
+// Reads a texture as linear RGB (texture.h): 8- and 16-bit files are taken as sRGB-encoded, float
+// files (EXR, HDR) as linear; grey images are widened to RGB and alpha is dropped. Three floats a
+// texel count against the input limit (image_budget.h), whatever the file stores.
+Texture read_texture(const std::string& path);
 
 // sRGB transfer functions (IEC 61966-2-1).
 float srgb_encode(float linear);

@@ -62,12 +62,17 @@ struct Tables {
 
 }  // namespace
 
-void srgb_decode_pixels(const float* values, int channels, std::size_t count, float* rgb) {
+const float* srgb8_decode_table() {
   static const std::array<float, 256> linear = [] {
     std::array<float, 256> table{};
     for (int k = 0; k < 256; ++k) table[std::size_t(k)] = srgb_decode(float(k) * (1.0f / 255.0f));
     return table;
   }();
+  return linear.data();
+}
+
+void srgb_decode_pixels(const float* values, int channels, std::size_t count, float* rgb) {
+  const float* linear = srgb8_decode_table();
   const std::size_t step = std::size_t(channels);
   const std::size_t offset[3] = {0, channels >= 3 ? 1u : 0u, channels >= 3 ? 2u : 0u};
   for (std::size_t p = 0; p < count; ++p)
@@ -77,7 +82,7 @@ void srgb_decode_pixels(const float* values, int channels, std::size_t count, fl
       const int k = code >= 0.0f && code <= 255.0f ? int(code + 0.5f) : 0;
       const bool is_code =
           std::bit_cast<std::uint32_t>(float(k) * (1.0f / 255.0f)) == std::bit_cast<std::uint32_t>(v);
-      rgb[p * 3 + std::size_t(c)] = is_code ? linear[std::size_t(k)] : srgb_decode(v);
+      rgb[p * 3 + std::size_t(c)] = is_code ? linear[k] : srgb_decode(v);
     }
 }
 

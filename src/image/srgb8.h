@@ -26,4 +26,7 @@ std::uint8_t srgb8_reference(float linear);
 // and by the formula otherwise (16-bit files).
 void srgb_decode_pixels(const float* values, int channels, std::size_t count, float* rgb);
 
+// That table: entry k is srgb_decode(k · (1/255)), 256 floats.
+const float* srgb8_decode_table();
+
 }  // namespace rayvec

@@ -76,16 +76,17 @@ Vec3f diffuse_albedo(const Scene& scene, const SurfacePoint& s) {
   const Material& m = scene.materials[s.material];
   const int32_t tex = scene.material_texture[s.material];
   if (tex < 0) return m.Kd;
-  const Image& img = scene.textures[tex];
+  const Texture& img = scene.textures[tex];
+  const int width = img.width(), height = img.height();
   // OBJ texture space has v up; image row 0 is the top.
-  const float fx = (s.u - std::floor(s.u)) * float(img.width) - 0.5f;
-  const float fy = (1.0f - (s.v - std::floor(s.v))) * float(img.height) - 0.5f;
+  const float fx = (s.u - std::floor(s.u)) * float(width) - 0.5f;
+  const float fy = (1.0f - (s.v - std::floor(s.v))) * float(height) - 0.5f;
   const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
   const float ax = fx - float(x0), ay = fy - float(y0);
   auto texel = [&](int x, int y) {
-    x = ((x % img.width) + img.width) % img.width;
-    y = ((y % img.height) + img.height) % img.height;
-    return Vec3f{img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2)};
+    x = ((x % width) + width) % width;
+    y = ((y % height) + height) % height;
+    return img.texel(x, y);
   };
   const Vec3f top = texel(x0, y0) * (1 - ax) + texel(x0 + 1, y0) * ax;
   const Vec3f bottom = texel(x0, y0 + 1) * (1 - ax) + texel(x0 + 1, y0 + 1) * ax;

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "image/image.h"
+#include "image/texture.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
 #include "geometry/triangle_mesh.h"
@@ -63,7 +63,7 @@ struct Scene {
   std::vector<int32_t> triangle_object;    // per triangle, index of the object it came from
   std::vector<Material> materials;
   std::vector<int32_t> material_texture;  // per material, index into textures or -1
-  std::vector<Image> textures;            // linear RGB (map_Kd)
+  std::vector<Texture> textures;          // linear RGB (map_Kd)
   // Corner attributes where the OBJ gives them: triangle t's vertex normals are
   // corner_normals[normals_of[t]] and its texture coordinates corner_uv[uv_of[t]], kNoCorners
   // where it gives none (normals() and uv() read them). Most meshes give neither, and a slot of

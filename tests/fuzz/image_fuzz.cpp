@@ -5,7 +5,7 @@
 // that start with none of the PNG signature, the JPEG marker and the EXR magic are skipped: other
 // formats belong to OpenImageIO's module. The input limit is lowered to 4 MB so that a header declaring a
 // large raster must be refused, not decoded. Only InputError may escape; an image that loads must hold width
-// × height × channels pixels within that limit.
+// × height × channels pixels within that limit, a texture three codes or floats a texel.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -43,10 +43,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         __builtin_trap();
       return 0;
     }
-    const rayvec::Image image = rayvec::read_texture(path);
-    if (image.width < 1 || image.height < 1 || image.nchannels() != 3) __builtin_trap();
-    if (image.pixels.size() != std::size_t(image.width) * std::size_t(image.height) * 3) __builtin_trap();
-    if (rayvec::decoded_image_bytes(image.width, image.height, 3) > 4000000) __builtin_trap();
+    const rayvec::Texture texture = rayvec::read_texture(path);
+    if (texture.width() < 1 || texture.height() < 1) __builtin_trap();
+    const std::size_t texels = std::size_t(texture.width()) * std::size_t(texture.height());
+    if (texture.bytes() != texels * (texture.holds_codes() ? 3 : 3 * sizeof(float))) __builtin_trap();
+    if (rayvec::decoded_image_bytes(texture.width(), texture.height(), 3) > 4000000) __builtin_trap();
+    const rayvec::Vec3f last = texture.texel(texture.width() - 1, texture.height() - 1);
+    if (last.x != last.x && texture.holds_codes()) __builtin_trap();  // codes decode to numbers
   } catch (const rayvec::InputError&) {}
   return 0;
 }

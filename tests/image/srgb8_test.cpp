@@ -114,8 +114,9 @@ TEST(Srgb8, TextureDecodeEqualsTheFormula) {
   const std::string path = test::temp_dir("srgb8_texture") + "/codes.png";
   const std::vector<std::uint8_t> png = encode_png_rgb8(256, 1, rgb, {});
   test::write_file(path, std::string(png.begin(), png.end()));
-  const Image tex = read_texture(path);
-  for (int k = 0; k < 256; ++k) EXPECT_EQ(tex.at(k, 0, 1), srgb_decode(float(k) * (1.0f / 255.0f))) << k;
+  const Texture tex = read_texture(path);
+  EXPECT_TRUE(tex.holds_codes());
+  for (int k = 0; k < 256; ++k) EXPECT_EQ(tex.texel(k, 0).y, srgb_decode(float(k) * (1.0f / 255.0f))) << k;
 }
 
 }  // namespace
