@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <unordered_map>
 
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "platform/large_buffer.h"
 #include "scene/obj_loader.h"
 #include "scene/texture_path.h"
+#include "scene/texture_reads.h"
 
 namespace rayvec {
 namespace {
@@ -38,26 +41,28 @@ void MaterialOverride::apply(Material& m) const {
   if (map_Kd) m.map_Kd = *map_Kd;
 }
 
-int32_t Scene::add_material(const Material& m) {
+int32_t Scene::add_material(const Material& m) { return add_material(m, nullptr); }
+
+// The texture a new material names: one already loaded for an earlier material (one texture per
+// distinct file), else `read` when the file was read ahead (add_object), else read now.
+int32_t Scene::add_material(const Material& m, TextureRead* read) {
   materials.push_back(m);
   int32_t texture = -1;
   if (!m.map_Kd.empty()) {
-    // One texture per distinct file, shared by every material that names it.
     for (std::size_t i = 0; i < materials.size() - 1; ++i)
       if (materials[i].map_Kd == m.map_Kd) texture = material_texture[i];
     if (texture < 0) {
+      TextureRead now;
+      if (!read) now = read_texture_file(m.map_Kd);
+      TextureRead& r = read ? *read : now;
+      if (r.failure) std::rethrow_exception(r.failure);
       // A texture that cannot be used leaves the material with Kd alone: a warning, not a failure
       // (`render --strict` makes it one).
-      std::string problem = texture_file_problem(m.map_Kd);
+      const std::string& problem = r.problem;
       if (problem.empty()) {
-        try {
-          textures.push_back(read_texture(m.map_Kd));
-          texture = static_cast<int32_t>(textures.size() - 1);
-        } catch (const InputError& e) {
-          problem = std::string("cannot be decoded: ") + e.what();
-        }
-      }
-      if (!problem.empty()) {
+        textures.push_back(std::move(r.texture));
+        texture = static_cast<int32_t>(textures.size() - 1);
+      } else {
         warnings.push_back("material '" + m.name + "': texture " + m.map_Kd + " " + problem +
                            "; drawn with Kd only");
         materials.back().map_Kd.clear();
@@ -94,12 +99,26 @@ void Scene::set_uv(std::size_t t, const std::array<std::array<float, 2>, 3>& uv)
   }
 }
 
-void Scene::add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override) {
+void Scene::add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override,
+                       int threads) {
   const AffineMap map(transform);
   const auto first_material = static_cast<int32_t>(materials.size());
-  for (Material m : model.materials) {
-    override.apply(m);
-    add_material(m);
+  std::vector<Material> object_materials(model.materials);
+  for (Material& m : object_materials) override.apply(m);
+  // The texture files no material has loaded yet, each once, read ahead together: a model with
+  // dozens of maps spends most of its load decoding them.
+  std::unordered_map<std::string, std::size_t> ahead;
+  std::vector<std::string> paths;
+  for (const Material& m : object_materials) {
+    const bool loaded = std::any_of(materials.begin(), materials.end(),
+                                    [&](const Material& earlier) { return earlier.map_Kd == m.map_Kd; });
+    if (!m.map_Kd.empty() && !loaded && ahead.emplace(m.map_Kd, paths.size()).second)
+      paths.push_back(m.map_Kd);
+  }
+  std::vector<TextureRead> reads = read_texture_files(paths, threads);
+  for (const Material& m : object_materials) {
+    const auto at = ahead.find(m.map_Kd);
+    add_material(m, at == ahead.end() ? nullptr : &reads[at->second]);
   }
   int32_t fallback = -1;  // the MTL default, for triangles the OBJ gives no material
   const std::size_t first_tri = mesh.size(), tris = first_tri + model.mesh.size();

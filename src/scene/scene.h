@@ -18,6 +18,7 @@
 namespace rayvec {
 
 struct ObjModel;
+struct TextureRead;
 
 // A pinhole camera. Image right = cross(forward, up), image up completes the frame; row 0 is the
 // top row. fov_y is the full vertical field of view in degrees.
@@ -81,8 +82,10 @@ struct Scene {
 
   // Appends a model's triangles (transformed to world space) and its materials with `override`
   // applied (triangles without a material get the MTL default material, overridden too) as one
-  // new object; map_Kd textures are read (one that cannot be used: a warning, the material keeps Kd).
-  void add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override = {});
+  // new object; map_Kd textures are read, the distinct new files on up to `threads` threads (one
+  // that cannot be used: a warning, the material keeps Kd). The scene is the same whatever `threads`.
+  void add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override = {},
+                  int threads = 1);
   // Appends one triangle with material `material` (index) — for scenes built in code.
   void add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material);
   // Gives triangle t vertex normals / texture coordinates (corners in the triangle's order).
@@ -101,6 +104,7 @@ struct Scene {
   std::pair<Vec3f, Vec3f> bounds() const;
 
  private:
+  int32_t add_material(const Material& m, TextureRead* read);
   std::size_t object_count_ = 0;
 };
 

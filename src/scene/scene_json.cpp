@@ -304,7 +304,7 @@ Scene load_scene_json(const std::string& path, int threads) {
     const MaterialOverride m =
         o.contains("material") ? read_material(r, o["material"], where + ".material") : MaterialOverride{};
     const std::size_t first_vertex = scene.mesh.positions.size();
-    scene.add_object(load_obj(obj, ObjLoadOptions{.available_threads = threads}), t, m);
+    scene.add_object(load_obj(obj, ObjLoadOptions{.available_threads = threads}), t, m, threads);
     for (std::size_t v = first_vertex; v < scene.mesh.positions.size(); ++v)
       if (!point_in_range(scene.mesh.positions[v])) {
         const Vec3f p = scene.mesh.positions[v];
@@ -353,7 +353,7 @@ Scene load_scene(const std::string& path, int threads) {
   if (ext == ".obj") {
     Scene scene;
     scene.source = path;
-    scene.add_object(load_obj(path, ObjLoadOptions{.available_threads = threads}), Transform{});
+    scene.add_object(load_obj(path, ObjLoadOptions{.available_threads = threads}), Transform{}, {}, threads);
     scene = checked_size(std::move(scene), path);
     frame_bounding_box(scene);
     return scene;
