@@ -63,8 +63,8 @@ Format sniff(const std::string& path) {
   return Format::other;
 }
 
-Image read_any(const std::string& path, bool* encoded) {
-  switch (sniff(path)) {
+Image read_any(const std::string& path, Format format, bool* encoded) {
+  switch (format) {
     case Format::png: *encoded = true; return read_png(path);
     case Format::exr: *encoded = false; return read_exr(path);
     case Format::jpeg:
@@ -76,6 +76,11 @@ Image read_any(const std::string& path, bool* encoded) {
     case Format::other: break;
   }
   return read_with_oiio_module(path, encoded);
+}
+
+Texture texture_of(const std::string& path, const ImageBytes& raw) {
+  check_texture_size(path, raw.width, raw.height);
+  return Texture(raw);
 }
 
 }  // namespace
@@ -119,17 +124,22 @@ void require_image_writer(const std::string& path) {
 
 Image read_image(const std::string& path) {
   bool encoded = false;
-  return read_any(path, &encoded);
+  return read_any(path, sniff(path), &encoded);
 }
 
 Image read_image(const std::string& path, bool* encoded) {
   bool unused = false;
-  return read_any(path, encoded ? encoded : &unused);
+  return read_any(path, sniff(path), encoded ? encoded : &unused);
 }
 
 Texture read_texture(const std::string& path) {
+  // 8-bit PNG and JPEG codes straight into the texture, without a float image in between
+  const Format format = sniff(path);
+  if (format == Format::png) return texture_of(path, read_png_bytes(path));
+  if (format == Format::jpeg)
+    if (std::optional<ImageBytes> raw = read_jpeg_bytes(path)) return texture_of(path, *raw);
   bool encoded = false;
-  const Image raw = read_any(path, &encoded);
+  const Image raw = read_any(path, format, &encoded);
   check_texture_size(path, raw.width, raw.height);
   return Texture(raw, encoded);
 }

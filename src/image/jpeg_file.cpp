@@ -88,7 +88,7 @@ bool has_jpeg_signature(const unsigned char* bytes, std::size_t size) {
   return size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
 }
 
-std::optional<Image> read_jpeg(const std::string& path) {
+std::optional<ImageBytes> read_jpeg_bytes(const std::string& path) {
   JpegContext ctx;
   ctx.file = std::fopen(path.c_str(), "rb");
   if (!ctx.file) throw InputError(path, 0, std::string("cannot read image: ") + std::strerror(errno));
@@ -115,17 +115,23 @@ std::optional<Image> read_jpeg(const std::string& path) {
   ctx.info.out_color_space = channels == 1 ? JCS_GRAYSCALE : JCS_RGB;
   check_declared_image_size(path, ctx.info.image_width, ctx.info.image_height, channels);
 
-  const std::size_t row_bytes = std::size_t(ctx.info.image_width) * std::size_t(channels);
-  std::vector<std::uint8_t> raw(row_bytes * ctx.info.image_height);
-  if (!decode(ctx, raw.data(), row_bytes))
+  ImageBytes raw;
+  raw.width = int(ctx.info.image_width);
+  raw.height = int(ctx.info.image_height);
+  raw.channels = channels;
+  const std::size_t row_bytes = std::size_t(raw.width) * std::size_t(channels);
+  raw.bytes.resize(row_bytes * std::size_t(raw.height));
+  if (!decode(ctx, raw.bytes.data(), row_bytes))
     throw InputError(path, 0, std::string("cannot read JPEG: ") + ctx.errors.message);
   if (ctx.errors.truncated)
     throw InputError(path, 0, "cannot read JPEG: the file ends before its image data does (truncated?)");
 
-  Image image(int(ctx.info.image_width), int(ctx.info.image_height),
-              channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"});
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(raw[i]) * (1.0f / 255.0f);
-  return image;
+  return raw;
+}
+
+std::optional<Image> read_jpeg(const std::string& path) {
+  if (std::optional<ImageBytes> raw = read_jpeg_bytes(path)) return image_of_bytes(*raw);
+  return std::nullopt;
 }
 
 }  // namespace rayvec

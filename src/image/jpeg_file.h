@@ -12,12 +12,15 @@ namespace rayvec {
 // True when `bytes` start with a JPEG start-of-image marker (FF D8 FF).
 bool has_jpeg_signature(const unsigned char* bytes, std::size_t size);
 
-// Reads a greyscale (channel Y) or colour (R G B) JPEG as 8-bit values v/255, still sRGB-encoded,
-// with libjpeg's default decoding (accurate integer IDCT, smooth chroma upsampling) as OpenImageIO
-// decodes it, so the pixels are the ones its module gives. Returns nullopt for the colour models it
-// leaves to OpenImageIO (CMYK, YCCK, other component counts). The declared size is checked
-// (image_budget.h) before any pixel is decoded. Throws InputError naming the file for anything
-// unreadable, a file that ends before its image data does, or more than kMaxJpegScans scans.
+// Reads a greyscale (one channel) or colour (three) JPEG's 8-bit codes with libjpeg's default
+// decoding (accurate integer IDCT, smooth chroma upsampling), as OpenImageIO decodes it, so the
+// pixels are the ones its module gives. Returns nullopt for the colour models it leaves to
+// OpenImageIO (CMYK, YCCK, other component counts). The declared size is checked (image_budget.h)
+// before any pixel is decoded. Throws InputError naming the file for anything unreadable, a file
+// that ends before its image data does, or more than kMaxJpegScans scans.
+std::optional<ImageBytes> read_jpeg_bytes(const std::string& path);
+
+// read_jpeg_bytes as floats v/255 (still sRGB-encoded), channels Y or R G B.
 std::optional<Image> read_jpeg(const std::string& path);
 
 // Most scans a progressive JPEG may have: a few dozen in real files; thousands of tiny scans make

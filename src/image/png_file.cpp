@@ -120,22 +120,13 @@ void check_chunk_lengths(const std::string& path, std::FILE* file) {
   std::fseek(file, 0, SEEK_SET);
 }
 
-std::vector<std::string> channel_names(int channels) {
-  switch (channels) {
-    case 1: return {"Y"};
-    case 2: return {"Y", "A"};
-    case 3: return {"R", "G", "B"};
-    default: return {"R", "G", "B", "A"};
-  }
-}
-
 }  // namespace
 
 bool has_png_signature(const unsigned char* bytes, std::size_t size) {
   return size >= 8 && png_sig_cmp(bytes, 0, 8) == 0;
 }
 
-Image read_png(const std::string& path, bool* sixteen_bit) {
+ImageBytes read_png_bytes(const std::string& path) {
   PngContext ctx;
   ctx.file = std::fopen(path.c_str(), "rb");
   if (!ctx.file) throw InputError(path, 0, std::string("cannot read image: ") + std::strerror(errno));
@@ -157,24 +148,22 @@ Image read_png(const std::string& path, bool* sixteen_bit) {
   if (fstat(fileno(ctx.file), &st) == 0 && S_ISREG(st.st_mode))
     check_deflate_ratio(path, h.width, h.height, h.rowbytes * h.height, std::size_t(st.st_size));
 
-  std::vector<std::uint8_t> raw(h.rowbytes * h.height);
+  ImageBytes raw;
+  raw.width = int(h.width);
+  raw.height = int(h.height);
+  raw.channels = h.channels;
+  raw.bits = h.bit_depth == 16 ? 16 : 8;
+  raw.bytes.resize(h.rowbytes * h.height);
   std::vector<png_bytep> rows(h.height);
-  for (png_uint_32 y = 0; y < h.height; ++y) rows[y] = raw.data() + std::size_t(y) * h.rowbytes;
+  for (png_uint_32 y = 0; y < h.height; ++y) rows[y] = raw.bytes.data() + std::size_t(y) * h.rowbytes;
   if (!read_rows(ctx, rows.data())) throw InputError(path, 0, std::string("cannot read PNG: ") + ctx.error);
+  return raw;
+}
 
-  Image image(int(h.width), int(h.height), channel_names(h.channels));
-  const std::size_t n = image.pixels.size();
-  if (h.bit_depth == 16) {
-    for (std::size_t i = 0; i < n; ++i) {
-      std::uint16_t v;
-      std::memcpy(&v, raw.data() + 2 * i, 2);
-      image.pixels[i] = float(v) * (1.0f / 65535.0f);
-    }
-  } else {
-    for (std::size_t i = 0; i < n; ++i) image.pixels[i] = float(raw[i]) * (1.0f / 255.0f);
-  }
-  if (sixteen_bit) *sixteen_bit = h.bit_depth == 16;
-  return image;
+Image read_png(const std::string& path, bool* sixteen_bit) {
+  const ImageBytes raw = read_png_bytes(path);
+  if (sixteen_bit) *sixteen_bit = raw.bits == 16;
+  return image_of_bytes(raw);
 }
 
 std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const std::vector<std::uint8_t>& rgb,

@@ -12,10 +12,12 @@ namespace rayvec {
 // True when `bytes` start with the PNG signature.
 bool has_png_signature(const unsigned char* bytes, std::size_t size);
 
-// Reads a PNG as float channels as stored: 8-bit values v/255, 16-bit v/65535 (still sRGB-encoded),
-// palettes expanded to RGB, a tRNS colour key to alpha; channels Y, Y A, R G B or R G B A. The
-// declared size is checked (image_budget.h) before any pixel is decoded. Throws InputError naming
-// the file for anything unreadable.
+// Reads a PNG's pixels as stored: 8- or 16-bit, palettes expanded to RGB, a tRNS colour key to alpha;
+// channels Y, Y A, R G B or R G B A. The declared size is checked (image_budget.h) before any
+// pixel is decoded. Throws InputError naming the file for anything unreadable.
+ImageBytes read_png_bytes(const std::string& path);
+
+// read_png_bytes as floats (image_of_bytes: 8-bit values v/255, 16-bit v/65535, still sRGB-encoded).
 Image read_png(const std::string& path, bool* sixteen_bit = nullptr);
 
 // Encodes 8-bit interleaved RGB rows (`rgb` holds width*height*3 bytes, top row first) as a PNG in

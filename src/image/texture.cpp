@@ -1,6 +1,8 @@
 #include "image/texture.h"
 
+#include <algorithm>
 #include <bit>
+#include <cstddef>
 
 #include "image/srgb8.h"
 
@@ -42,6 +44,26 @@ Texture::Texture(const Image& raw, bool encoded) : width_(raw.width), height_(ra
   linear_.resize(count * 3);
   for (std::size_t p = 0; p < count; ++p)
     for (std::size_t c = 0; c < 3; ++c) linear_[p * 3 + c] = raw.pixels[p * n + channel[c]];
+}
+
+Texture::Texture(const ImageBytes& raw) {
+  if (raw.bits != 8) {
+    *this = Texture(image_of_bytes(raw), true);
+    return;
+  }
+  width_ = raw.width;
+  height_ = raw.height;
+  const std::size_t count = std::size_t(raw.width) * std::size_t(raw.height);
+  const std::size_t n = std::size_t(raw.channels);
+  const std::size_t channel[3] = {0, n >= 3 ? 1u : 0u, n >= 3 ? 2u : 0u};
+  codes_.resize(count * 3);
+  if (n == 3) {
+    std::copy(raw.bytes.begin(), raw.bytes.begin() + std::ptrdiff_t(count * 3), codes_.begin());
+  } else {
+    for (std::size_t p = 0; p < count; ++p)
+      for (std::size_t c = 0; c < 3; ++c) codes_[p * 3 + c] = raw.bytes[p * n + channel[c]];
+  }
+  decode_ = srgb8_decode_table();
 }
 
 }  // namespace rayvec

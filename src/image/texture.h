@@ -19,6 +19,8 @@ class Texture {
   // values; else linear): the first three channels, or the first one thrice when there are fewer
   // (grey); alpha and the rest are dropped.
   Texture(const Image& raw, bool encoded);
+  // From a file's 8-bit codes, kept as they are (16-bit values: as Texture(image_of_bytes(raw), true)).
+  explicit Texture(const ImageBytes& raw);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -103,6 +103,44 @@ TEST(ImageIo, OtherFormatsAreReadThroughTheOpenImageIoModule) {
   EXPECT_THROW(read_image(dir + "/junk.img"), InputError);
 }
 
+// Every way a texture is made — 8-bit codes straight from PNG and JPEG, 16-bit PNG values, another
+// format through OpenImageIO, linear EXR floats — gives each texel as decoding the file's float
+// image would: srgb_decode of the first three channels (or the grey one thrice), EXR as stored.
+TEST(ImageIo, TexturesOfEveryFormatAreTheirImagesDecoded) {
+  const std::string dir = test::temp_dir("texture_kinds");
+  const std::string data = std::string(RAYVEC_TEST_DATA);
+  write_image(dir + "/a.exr", gradient(5, 3, 2.0f));
+  test::write_file(dir + "/tex.ppm", std::string("P6\n2 1\n255\n\xff\x00\x00\x00\x80\x00", 17));
+  const std::string files[] = {data + "/fuzz_corpus/image/rgb8.png",
+                               data + "/fuzz_corpus/image/rgba8.png",
+                               data + "/fuzz_corpus/image/grey16.png",
+                               data + "/fuzz_corpus/image/palette2_trns_interlaced.png",
+                               data + "/images/jpeg/rgb420.jpg",
+                               data + "/images/jpeg/grey.jpg",
+                               data + "/images/jpeg/cmyk.jpg",
+                               dir + "/tex.ppm",
+                               dir + "/a.exr"};
+  for (const std::string& path : files) {
+    SCOPED_TRACE(path);
+    bool encoded = false;
+    const Image raw = read_image(path, &encoded);
+    const Texture tex = read_texture(path);
+    ASSERT_EQ(tex.width(), raw.width);
+    ASSERT_EQ(tex.height(), raw.height);
+    for (int y = 0; y < raw.height; ++y)
+      for (int x = 0; x < raw.width; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const float v = raw.at(x, y, raw.nchannels() >= 3 ? c : 0);
+          const Vec3f t = tex.texel(x, y);
+          ASSERT_EQ(c == 0   ? t.x
+                    : c == 1 ? t.y
+                             : t.z,
+                    encoded ? srgb_decode(v) : v)
+              << x << "," << y << "," << c;
+        }
+  }
+}
+
 TEST(Compare, MeasuresRmseMaxAndCount) {
   Image a(4, 1, {"R", "G", "B"}), b = a;
   b.at(1, 0, 0) = 0.5f;  // one channel of one pixel differs by 0.5
