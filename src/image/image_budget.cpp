@@ -60,7 +60,7 @@ void check_declared_tile_size(const std::string& path, std::int64_t width, std::
 }
 
 void check_texture_size(const std::string& path, std::int64_t width, std::int64_t height) {
-  check_limit(path, "is a " + size_text(width, height) + " texture, held as RGB floats",
+  check_limit(path, "is a " + size_text(width, height) + " texture, counted as RGB floats",
               decoded_image_bytes(width, height, 3));
 }
 

@@ -22,9 +22,9 @@ void check_declared_image_size(const std::string& path, std::int64_t width, std:
 // whatever the data window is.
 void check_declared_tile_size(const std::string& path, std::int64_t width, std::int64_t height, int channels);
 
-// Throws InputError `path: is a WxH texture ...` when the image, decoded, grows past the input limit
-// as a texture's three float channels (a grey or two-channel file passes check_declared_image_size
-// with fewer).
+// Throws InputError `path: is a WxH texture ...` when the image, counted as three float channels
+// (the unit of the input limit, whatever the texture then keeps: 8-bit codes or floats), grows past
+// the limit (a grey or two-channel file passes check_declared_image_size with fewer).
 void check_texture_size(const std::string& path, std::int64_t width, std::int64_t height);
 
 // Throws InputError when `raw_bytes` of pixel data cannot have been compressed with DEFLATE into a

@@ -196,7 +196,7 @@ TEST(ImageBudget, TextureIsCheckedAsTheRgbItBecomes) {
   }
   ::unsetenv("RAYVEC_MAX_INPUT_MB");
   EXPECT_NE(
-      m.find("grey.pgm: is a 400x400 texture, held as RGB floats, 2 MB once decoded, more than the 1 MB"),
+      m.find("grey.pgm: is a 400x400 texture, counted as RGB floats, 2 MB once decoded, more than the 1 MB"),
       std::string::npos)
       << m;
   const Texture tex = read_texture(dir + "/grey.pgm");  // grey widened: three equal channels
