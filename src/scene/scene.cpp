@@ -5,11 +5,8 @@
 #include <string>
 #include <unordered_map>
 
-#include "image/image_io.h"
-#include "io/input_error.h"
 #include "platform/large_buffer.h"
 #include "scene/obj_loader.h"
-#include "scene/texture_path.h"
 #include "scene/texture_reads.h"
 
 namespace rayvec {
