@@ -71,21 +71,6 @@ const float* srgb8_decode_table() {
   return linear.data();
 }
 
-void srgb_decode_pixels(const float* values, int channels, std::size_t count, float* rgb) {
-  const float* linear = srgb8_decode_table();
-  const std::size_t step = std::size_t(channels);
-  const std::size_t offset[3] = {0, channels >= 3 ? 1u : 0u, channels >= 3 ? 2u : 0u};
-  for (std::size_t p = 0; p < count; ++p)
-    for (int c = 0; c < 3; ++c) {
-      const float v = values[p * step + offset[c]];
-      const float code = v * 255.0f;
-      const int k = code >= 0.0f && code <= 255.0f ? int(code + 0.5f) : 0;
-      const bool is_code =
-          std::bit_cast<std::uint32_t>(float(k) * (1.0f / 255.0f)) == std::bit_cast<std::uint32_t>(v);
-      rgb[p * 3 + std::size_t(c)] = is_code ? linear[k] : srgb_decode(v);
-    }
-}
-
 std::uint8_t srgb8_reference(float linear) {
   const float e = std::isnan(linear) ? 0.0f : std::clamp(srgb_encode(linear), 0.0f, 1.0f);
   return static_cast<std::uint8_t>(std::lround(e * 255.0f));

@@ -19,14 +19,8 @@ void srgb8_pixels(const float* linear, int channels, std::size_t count, std::uin
 // The reference: lround(clamp(srgb_encode(v), 0, 1) · 255), NaN as 0.
 std::uint8_t srgb8_reference(float linear);
 
-// The other way, for textures: srgb_decode of `count` pixels of `channels` values each as read
-// from a file, three floats a pixel: the first three channels, or the first one thrice when there
-// are fewer than three (grey). By a 256-entry table where a value is an 8-bit code as the readers
-// make it (k · (1/255) in float) — the very float the formula gives, a pow() less per channel —
-// and by the formula otherwise (16-bit files).
-void srgb_decode_pixels(const float* values, int channels, std::size_t count, float* rgb);
-
-// That table: entry k is srgb_decode(k · (1/255)), 256 floats.
+// The other way, for textures of 8-bit files (texture.h): a table whose entry k is
+// srgb_decode(k · (1/255)), 256 floats, so a code decodes to the very float the formula gives.
 const float* srgb8_decode_table();
 
 }  // namespace rayvec

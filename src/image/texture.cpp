@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstddef>
 
+#include "image/image_io.h"
 #include "image/srgb8.h"
 
 namespace rayvec {
@@ -37,13 +38,13 @@ Texture::Texture(const Image& raw, bool encoded) : width_(raw.width), height_(ra
       return;
     }
     codes_ = {};
-    linear_.resize(count * 3);
-    srgb_decode_pixels(raw.pixels.data(), raw.nchannels(), count, linear_.data());
-    return;
   }
   linear_.resize(count * 3);
   for (std::size_t p = 0; p < count; ++p)
-    for (std::size_t c = 0; c < 3; ++c) linear_[p * 3 + c] = raw.pixels[p * n + channel[c]];
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float v = raw.pixels[p * n + channel[c]];
+      linear_[p * 3 + c] = encoded ? srgb_decode(v) : v;
+    }
 }
 
 Texture::Texture(const ImageBytes& raw) {

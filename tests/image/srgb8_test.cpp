@@ -86,28 +86,36 @@ TEST(Srgb8, PixelsGiveTheBytesOfEachChannel) {
   }
 }
 
-// Decoding texture values by the table is the formula bit for bit: every 8-bit code, values that are
-// not codes (16-bit, out of range) by the formula, grey widened; and a PNG of all codes read as a
-// texture.
+// A texture's texels are the formula's floats bit for bit: 8-bit codes kept as codes and decoded by
+// the table, values that are not codes (16-bit, out of range, −0) kept as floats, grey widened; and a
+// PNG of all codes read as a texture.
 TEST(Srgb8, TextureDecodeEqualsTheFormula) {
-  std::vector<float> values;
-  for (int k = 0; k < 256; ++k) values.push_back(float(k) * (1.0f / 255.0f));
-  for (const float v : {0.5f, 1000.0f / 65535.0f, 1e-6f, 1.5f, -0.25f, -0.0f, 2.0f / 255.0f + 1e-7f})
-    values.push_back(v);
-  for (const int channels : {1, 3, 4}) {
-    std::vector<float> in(values.size() * std::size_t(channels));
-    for (std::size_t i = 0; i < in.size(); ++i) in[i] = values[(i * 5) % values.size()];
-    const std::size_t count = values.size();
-    std::vector<float> rgb(count * 3);
-    srgb_decode_pixels(in.data(), channels, count, rgb.data());
-    for (std::size_t p = 0; p < count; ++p)
-      for (int c = 0; c < 3; ++c) {
-        const float v = in[p * std::size_t(channels) + (channels >= 3 ? std::size_t(c) : 0)];
-        ASSERT_EQ(std::bit_cast<std::uint32_t>(rgb[p * 3 + std::size_t(c)]),
-                  std::bit_cast<std::uint32_t>(srgb_decode(v)))
-            << channels << " channels, value " << v;
-      }
-  }
+  std::vector<float> codes;
+  for (int k = 0; k < 256; ++k) codes.push_back(float(k) * (1.0f / 255.0f));
+  std::vector<float> with_minus_zero = codes, with_others = codes;
+  with_minus_zero.push_back(-0.0f);  // not code 0: the formula keeps its sign
+  for (const float v : {0.5f, 1000.0f / 65535.0f, 1e-6f, 1.5f, -0.25f, 2.0f / 255.0f + 1e-7f})
+    with_others.push_back(v);
+  const std::vector<std::string> names[] = {{"Y"}, {}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
+  // the codes alone are kept as codes; with any other value, as floats
+  for (const std::vector<float>* values : {&codes, &with_minus_zero, &with_others})
+    for (const int channels : {1, 3, 4}) {
+      const std::size_t count = values->size();
+      Image in(int(count), 1, names[channels - 1]);
+      for (std::size_t i = 0; i < in.pixels.size(); ++i) in.pixels[i] = (*values)[(i * 5) % count];
+      const Texture tex(in, true);
+      EXPECT_EQ(tex.holds_codes(), values == &codes);
+      for (std::size_t p = 0; p < count; ++p)
+        for (int c = 0; c < 3; ++c) {
+          const float v = in.pixels[p * std::size_t(channels) + (channels >= 3 ? std::size_t(c) : 0)];
+          const Vec3f t = tex.texel(int(p), 0);
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(c == 0   ? t.x
+                                                 : c == 1 ? t.y
+                                                          : t.z),
+                    std::bit_cast<std::uint32_t>(srgb_decode(v)))
+              << channels << " channels, value " << v;
+        }
+    }
   std::vector<std::uint8_t> rgb(256 * 3);
   for (int k = 0; k < 256; ++k)
     rgb[std::size_t(k) * 3] = rgb[std::size_t(k) * 3 + 1] = rgb[std::size_t(k) * 3 + 2] = std::uint8_t(k);
