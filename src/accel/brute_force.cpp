@@ -5,7 +5,10 @@
 namespace rayvec {
 
 BruteForce::BruteForce(const TriangleMesh& mesh, const TraceConfig& config)
-    : config_(config), tris_(mesh), kernels_(&triangle_kernels(config.isa, config.intersector)) {}
+    : config_(config),
+      // the normals only the float `mt` kernels read
+      tris_(mesh, {}, config.intersector == Intersector::mt ? Normals::stored : Normals::formed),
+      kernels_(&triangle_kernels(config.isa, config.intersector)) {}
 
 Hit BruteForce::closest(const Ray& ray) const {
   Hit hit;

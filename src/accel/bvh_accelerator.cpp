@@ -25,6 +25,18 @@ bool direct_leaf(const TraceConfig& config, const BvhOptions& options) {
   return options.direct_leaf != 0;
 }
 
+// Whether the triangle rows of a tree of `tree_bytes` and `slots` slots store the `mt` normals
+// (BvhOptions::stored_normals).
+Normals normals(const TraceConfig& config, const BvhOptions& options, std::size_t tree_bytes,
+                std::size_t slots, std::size_t triangles) {
+  if (config.intersector != Intersector::mt || options.stored_normals == 0) return Normals::formed;
+  if (options.stored_normals > 0) return Normals::stored;
+  const std::size_t padded = TriangleSoA::padded_slots(uint32_t(slots));
+  const double bytes =
+      double(tree_bytes) + double(padded * (TriangleSoA::kSlotBytes + TriangleSoA::kNormalBytes));
+  return bytes <= kBvhBytesPerTriangle * double(triangles) ? Normals::stored : Normals::formed;
+}
+
 }  // namespace
 
 BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& options)
@@ -46,7 +58,8 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
   tree_ = WideBvh(binary, traversal_->width, CollapseRule::lower_sah_cost, merge_slots);
   sort_leaf_slots(tree_, binary.order);
   tree_.set_box_epsilon(options.box_epsilon);
-  tris_ = TriangleSoA(mesh, binary.order);
+  tris_ = TriangleSoA(mesh, binary.order,
+                      normals(config, options, tree_.bytes(), binary.order.size(), mesh.size()));
 }
 
 bool packet_coherent(const Ray* rays, std::size_t n) {

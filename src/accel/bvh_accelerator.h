@@ -29,7 +29,16 @@ struct BvhOptions {
   // kernel table (0); −1 = default_direct_leaf(isa, intersector). Other
   // intersectors always use the table. Same results either way.
   int direct_leaf = -1;
+  // Whether the triangle rows store the normals the float `mt` kernels read (12 bytes a slot) or
+  // leave the kernels to form them per step: −1 = stored for `mt` while the BVH and its triangles
+  // fit in kBvhBytesPerTriangle bytes a triangle (long triangles' spatial-split references pass
+  // it), 1 = stored for `mt`, 0 = never stored. No other intersector reads them. Same hits either
+  // way (benchmarks.md#decision-normal-budget).
+  int stored_normals = -1;
 };
+
+// The memory budget of a BVH with its triangle rows, in bytes per triangle of the mesh.
+inline constexpr double kBvhBytesPerTriangle = 64.0;
 
 // cos of the widest angle between a packet's first direction and another for closest_group to
 // trace the group as a packet (about 8 degrees).

@@ -36,6 +36,7 @@ struct Options {
   int merge_steps = BvhOptions{}.merge_steps;
   int builds = 3;  // builds timed; the median is reported
   double split_budget = SahConfig{}.split_budget;
+  int stored_normals = BvhOptions{}.stored_normals;
 };
 
 std::string json_array(const std::vector<double>& v) {
@@ -147,6 +148,8 @@ int run(const Options& o) {
   bvh_options.merge_steps = o.merge_steps;
   if (!(o.split_budget >= 0 && o.split_budget <= 1)) throw InputError("--split-budget: must be 0 to 1");
   bvh_options.sah.split_budget = float(o.split_budget);
+  if (o.stored_normals < -1 || o.stored_normals > 1) throw InputError("--stored-normals: must be -1, 0 or 1");
+  bvh_options.stored_normals = o.stored_normals;
   if (o.leaf_block != 0) {
     if (o.leaf_block < 1 || o.leaf_block > 32) throw InputError("--leaf-block: must be 1 to 32");
     bvh_options.sah.leaf_block = uint32_t(o.leaf_block);
@@ -205,14 +208,15 @@ int run(const Options& o) {
     std::printf(
         "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
         "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,\"merge_steps\":%"
-        "d,\"split_budget\":%.3f,\"references_per_tri\":%.4f,"
+        "d,\"split_budget\":%.3f,\"references_per_tri\":%.4f,\"stored_normals\":%s,"
         "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
         "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
         json_string(o.model).c_str(), mesh.size(), width, height, json_string(cpu_features().brand).c_str(),
         json_string(isa_name(config.isa)).c_str(), json_string(intersector_name(config.intersector)).c_str(),
         threads, bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
         bvh->traversal().direct_leaf ? "true" : "false", o.merge_steps, double(split_budget), refs_per_tri,
-        o.builds, build_s, json_array(build_runs).c_str(), bytes_per_tri, fma.avx2, fma.avx512);
+        bvh->triangles().stores_normals() ? "true" : "false", o.builds, build_s,
+        json_array(build_runs).c_str(), bytes_per_tri, fma.avx2, fma.avx512);
     print_sets_json(run);
     if (o.vs_embree) {
       std::printf(",\"embree\":{\"build_s\":%.6f,\"build_runs_s\":%s,\"max_isa\":\"%s\",", embree_build_s,
@@ -241,12 +245,12 @@ int run(const Options& o) {
                   : "");
   std::printf(
       "bvh: %d-wide, %u nodes, %u leaves (merged up to %d kernel steps), %.3f references per triangle "
-      "(spatial-split budget %.2f), depth %u, leaf kernel %s; build %.4f s; %.1f bytes/triangle (nodes %.1f "
-      "+ "
-      "triangles %.1f)\n",
+      "(spatial-split budget %.2f), depth %u, leaf kernel %s, normals %s; build %.4f s; %.1f bytes/triangle "
+      "(nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), o.merge_steps, refs_per_tri,
       double(split_budget), bvh->tree().depth(),
-      bvh->traversal().direct_leaf ? "called directly" : "through the kernel table", build_s, bytes_per_tri,
+      bvh->traversal().direct_leaf ? "called directly" : "through the kernel table",
+      bvh->triangles().stores_normals() ? "stored" : "formed per step", build_s, bytes_per_tri,
       double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
   if (o.vs_embree)
     std::printf(
@@ -301,6 +305,9 @@ void register_bench_rays_command(Command& bench) {
       .option("--split-budget", o.split_budget,
               "tuning: spatial splits may add up to this fraction of the triangles as extra leaf "
               "references (0 = none; default 0.3)")
+      .option("--stored-normals", o.stored_normals,
+              "tuning: the triangle rows store the mt kernels' normals (1) or the kernels form them per "
+              "step (0); -1 = default (stored while the BVH stays within 64 bytes a triangle)")
       .option("--direct-leaf", o.direct_leaf,
               "tuning: closest-hit traversal calls the mt leaf kernel directly (1) or through the "
               "kernel table (0); -1 = default (directly on AVX2 and AVX-512)");

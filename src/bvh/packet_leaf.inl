@@ -33,14 +33,16 @@ struct MtPacketRays {
   V lo;
 };
 
-// A leaf's edges e2 = v2 − v0 and e1 = v1 − v0 as six rows (x, y, z of e2, then of e1: row k is
-// kRowV2 + k's edge), subtracted W slots at a time once per leaf instead of once per triangle and
-// packet step (benchmarks.md#decision-packet-leaf-edges). The same float subtraction per value as
-// the single-ray kernels' at.edge, so bit-identical. Slot i is at i − first in every row, first being
-// the leaf's first block start; a leaf of kMaxLeafTriangles slots spans at most three blocks.
+// A leaf's edges e2 = v2 − v0 and e1 = v1 − v0 and its normals ng = e2 × e1 as nine rows (x, y, z
+// of e2, of e1, then of ng: row k < 6 is kRowV2 + k's edge), formed W slots at a time once per leaf
+// instead of once per triangle and packet step (benchmarks.md#decision-packet-leaf-edges). The same
+// float operations per value as the single-ray kernels' at.edge and at.normal, so bit-identical.
+// Slot i is at i − first in every row, first being the leaf's first block start; a leaf of
+// kMaxLeafTriangles slots spans at most three blocks.
 struct MtLeafEdges {
   static constexpr uint32_t kStride = 3 * kSlotBlock;
-  alignas(64) float row[6][kStride];
+  static constexpr uint32_t kRowNormal = 6;
+  alignas(64) float row[9][kStride];
   uint32_t first;
 };
 
@@ -50,17 +52,21 @@ RAYVEC_INLINE void mt_leaf_edges(const TriangleArrays& T, uint32_t begin, uint32
   for (uint32_t b = e.first; b < end; b += kSlotBlock) {
     const float* block = T.v0x + slot_offset(b);
     float* to = &e.row[0][b - e.first];
-    for (uint32_t k = 0; k < 6; ++k)
-      for (uint32_t j = 0; j < kSlotBlock; j += V::W) {
-        const V v = V::load_aligned(block + (kRowV2 + k) * kSlotBlock + j);
-        const V v0 = V::load_aligned(block + (kRowV0 + k % 3) * kSlotBlock + j);
-        (v - v0).store(to + k * MtLeafEdges::kStride + j);
-      }
+    for (uint32_t j = 0; j < kSlotBlock; j += V::W) {
+      const MtTriangleLanes<V> at{block + j};
+      V edge[6];
+      for (uint32_t k = 0; k < 6; ++k) edge[k] = at.edge(kRowV2 + k, at(kRowV0 + k % 3));
+      const MtNormal<V> ng = mt_normal(edge[3], edge[4], edge[5], edge[0], edge[1], edge[2]);
+      for (uint32_t k = 0; k < 6; ++k) edge[k].store(to + k * MtLeafEdges::kStride + j);
+      ng.x.store(to + MtLeafEdges::kRowNormal * MtLeafEdges::kStride + j);
+      ng.y.store(to + (MtLeafEdges::kRowNormal + 1) * MtLeafEdges::kStride + j);
+      ng.z.store(to + (MtLeafEdges::kRowNormal + 2) * MtLeafEdges::kStride + j);
+    }
   }
 }
 
-// One triangle, slot i, broadcast to every lane (the `at` of mt_numerator_values), its edges from
-// the leaf's edge rows.
+// One triangle, slot i, broadcast to every lane (the `at` of mt_numerator_values), its edges and
+// normal from the leaf's rows.
 template <class V>
 struct MtTriangleBroadcast {
   const float* p;  // T.v0x + slot_offset(i)
@@ -68,6 +74,11 @@ struct MtTriangleBroadcast {
   RAYVEC_INLINE V operator()(uint32_t row) const { return V::broadcast(p[row * kSlotBlock]); }
   RAYVEC_INLINE V edge(uint32_t row, V) const {
     return V::broadcast(e[(row - kRowV2) * MtLeafEdges::kStride]);
+  }
+  RAYVEC_INLINE MtNormal<V> normal() const {
+    constexpr uint32_t n = MtLeafEdges::kRowNormal * MtLeafEdges::kStride;
+    return {V::broadcast(e[n]), V::broadcast(e[n + MtLeafEdges::kStride]),
+            V::broadcast(e[n + 2 * MtLeafEdges::kStride])};
   }
 };
 template <class V>

@@ -21,20 +21,44 @@ struct MtNumerators {
   V un, vn, tn, adet;     // −u·|det| (<= 0 on a hit), v·|det|, t·|det| (>= 0), |det|
 };
 
+// The unnormalized geometric normal ng = e2 × e1 (Embree's orientation) of a step's triangles, so
+// that det = d · ng and t·det = (v0 − o) · ng (21 multiply/adds a test instead of 27). Read from
+// TriangleArrays::ng where stored, else formed from the edges (benchmarks.md#decision-normal-budget):
+// each component is two products and a difference, rounded as the fill's scalar cross(e2, e1)
+// rounds them (no FMA), so stored and formed normals are the same bits. A step shares it between
+// all the rays it tests.
+template <class V>
+struct MtNormal {
+  V x, y, z;
+};
+
+template <class V>
+RAYVEC_INLINE MtNormal<V> mt_normal(V e1x, V e1y, V e1z, V e2x, V e2y, V e2z) {
+  return {e2y * e1z - e2z * e1y, e2z * e1x - e2x * e1z, e2x * e1y - e2y * e1x};
+}
+
 // Where the float `mt` arithmetic gets its triangle values: W consecutive triangles, one per lane
 // (brute force and the single-ray leaf kernel), or one triangle broadcast to every lane (the
 // ray-packet leaf kernel, packet_leaf.inl). `at(kRowV0 + a)` gives the lanes of that row, read from
 // the slot's v0x position `p` (every row of a block lies a fixed distance from it, triangle_soa.h:
-// one pointer live instead of twelve row pointers reloaded per step). Both go through
+// one pointer live instead of nine row pointers reloaded per step). Both go through
 // mt_numerators_core, so a ray gets bit-identical numerators whichever way the lanes are laid out;
 // the values are fetched where they are used, as before the split. `at.edge(kRowV2 + a, v0)` gives
-// the lanes of e2 (kRowV1 + a: e1), v − v0 by the fill's float subtraction, bit for bit
-// (triangle_soa.h); the packet kernel reads them from rows it subtracted once per leaf.
-template <class V>
+// the lanes of e2 (kRowV1 + a: e1), v − v0 by one float subtraction, and `at.normal()` the lanes
+// of ng: loaded from the stored rows (StoredNormal) or mt_normal of those edges; the packet kernel
+// reads edges and normal from rows it formed once per leaf.
+template <class V, bool StoredNormal = false>
 struct MtTriangleLanes {
-  const float* p;  // T.v0x + slot_offset(i)
+  const float* p;            // T.v0x + slot_offset(i)
+  const float* n = nullptr;  // StoredNormal: T.ng + normal_offset(i)
   RAYVEC_INLINE V operator()(uint32_t row) const { return V::load(p + row * kSlotBlock); }
   RAYVEC_INLINE V edge(uint32_t row, V v0) const { return (*this)(row)-v0; }
+  RAYVEC_INLINE MtNormal<V> normal() const {
+    if constexpr (StoredNormal) return {V::load(n), V::load(n + kSlotBlock), V::load(n + 2 * kSlotBlock)};
+    const V v0x = (*this)(kRowV0), v0y = (*this)(kRowV0 + 1), v0z = (*this)(kRowV0 + 2);
+    return mt_normal(edge(kRowV1, v0x), edge(kRowV1 + 1, v0y), edge(kRowV1 + 2, v0z), edge(kRowV2, v0x),
+                     edge(kRowV2 + 1, v0y), edge(kRowV2 + 2, v0z));
+  }
 };
 
 // The v0x position of the step after the W-aligned step at slot i, whose position is p: the next W
@@ -48,39 +72,57 @@ RAYVEC_INLINE const float* next_step(const float* p, uint32_t i) {
     return (i + V::W) % kSlotBlock == 0 ? p + (kSlotBlockFloats - kSlotBlock + V::W) : p + V::W;
 }
 
-// Every float `mt` loop's walk over the W-slot steps of [begin, end): `step(p, i, active)` for the
-// step at slot i, whose v0x position is p — a head step if begin is not on a step (lanes before begin
-// masked), the full steps without a lane mask (p carried by next_step), the partial last step.
-// Returns true as soon as a step does (an any-hit found), else false.
-template <class V, class Step>
-RAYVEC_INLINE bool mt_steps(const TriangleArrays& T, uint32_t begin, uint32_t end, const Step& step) {
+// Every float `mt` loop's walk over the W-slot steps of [begin, end): `step(at, i, active)` for the
+// step at slot i, whose lanes `at` reads (an MtTriangleLanes at v0x position p) — a head step if
+// begin is not on a step (lanes before begin masked), the full steps without a lane mask (p
+// carried by next_step), the partial last step. Returns true as soon as a step does (an any-hit
+// found), else false. Steps are compiled for stored and for formed normals, chosen once per walk.
+template <class V, bool StoredNormal, class Step>
+RAYVEC_INLINE bool mt_walk(const TriangleArrays& T, uint32_t begin, uint32_t end, const Step& step) {
   constexpr uint32_t W = V::W;
+  const auto lanes = [&T](const float* p, uint32_t i) __attribute__((always_inline)) {
+    if constexpr (StoredNormal)
+      return MtTriangleLanes<V, true>{p, T.ng + normal_offset(i)};
+    else
+      return MtTriangleLanes<V, false>{p};
+  };
   uint32_t i = begin;
   if (i % W != 0 && i < end) {
     const uint32_t head = first_step(i, W);
-    if (step(T.v0x + slot_offset(head), head, step_lanes<V>(head, begin, end))) return true;
+    if (step(lanes(T.v0x + slot_offset(head), head), head, step_lanes<V>(head, begin, end))) return true;
     i = head + W;
   }
   const float* p = T.v0x + slot_offset(i);
   for (; end - i >= W && i < end; p = next_step<V>(p, i), i += W)
-    if (step(p, i, first_lanes(V{}, W))) return true;
-  return i < end && step(p, i, first_lanes(V{}, end - i));
+    if (step(lanes(p, i), i, first_lanes(V{}, W))) return true;
+  return i < end && step(lanes(p, i), i, first_lanes(V{}, end - i));
+}
+
+template <class V, class Step>
+RAYVEC_INLINE bool mt_steps(const TriangleArrays& T, uint32_t begin, uint32_t end, const Step& step) {
+  if (T.ng) return mt_walk<V, true>(T, begin, end, step);
+  return mt_walk<V, false>(T, begin, end, step);
 }
 
 // The part of the arithmetic that depends on the ray's origin but not on its direction: s = v0 − o
-// and t·det = s · ng (before det's sign is folded in). Rays from one origin (a camera's, a
-// visibility study's) share it: the pair kernel forms it once for both rays, from the same
-// operations, so each ray's numerators are bit for bit those it gets alone.
+// and t·det = s · ng (before det's sign is folded in), with the step's normal ng. Rays from one
+// origin (a camera's, a visibility study's) share it: the pair kernel forms it once for both rays,
+// from the same operations, so each ray's numerators are bit for bit those it gets alone.
 template <class V>
 struct MtOrigin {
   V sx, sy, sz, tn;
+  MtNormal<V> ng;
 };
 
 template <class V, class At>
-RAYVEC_INLINE MtOrigin<V> mt_origin_values(const At& at, const RayLanes<V>& r) {
+RAYVEC_INLINE MtOrigin<V> mt_origin_values(const At& at, const RayLanes<V>& r, const MtNormal<V>& ng) {
   const V sx = at(kRowV0) - r.ox, sy = at(kRowV0 + 1) - r.oy, sz = at(kRowV0 + 2) - r.oz;
-  const V ngx = at(kRowNg), ngy = at(kRowNg + 1), ngz = at(kRowNg + 2);
-  return {sx, sy, sz, fmadd(sx, ngx, fmadd(sy, ngy, sz * ngz))};
+  return {sx, sy, sz, fmadd(sx, ng.x, fmadd(sy, ng.y, sz * ng.z)), ng};
+}
+
+template <class V, class At>
+RAYVEC_INLINE MtOrigin<V> mt_origin_values(const At& at, const RayLanes<V>& r) {
+  return mt_origin_values<V>(at, r, at.normal());
 }
 
 // The arithmetic of every float `mt` entry, lane by lane: ray lanes `r` from the origin part `o`
@@ -94,11 +136,11 @@ RAYVEC_INLINE MtNumerators<V> mt_numerator_values(const At& at, const RayLanes<V
   const V cy = fmsub(o.sz, r.dx, o.sx * r.dz);
   const V cz = fmsub(o.sx, r.dy, o.sy * r.dx);
   // det = d · ng
-  const V det = fmadd(r.dx, at(kRowNg), fmadd(r.dy, at(kRowNg + 1), r.dz * at(kRowNg + 2)));
+  const V det = fmadd(r.dx, o.ng.x, fmadd(r.dy, o.ng.y, r.dz * o.ng.z));
   out.adet = abs(det);
   // numerators with the sign of det folded in; un = −u·|det| (the negation stays in the compares,
   // one xor fewer than folding it)
-  // e2 = v2 − v0 and e1 = v1 − v0: the fill's float subtraction, bit for bit (triangle_soa.h)
+  // e2 = v2 − v0 and e1 = v1 − v0, one float subtraction each (triangle_soa.h)
   const V v0x = at(kRowV0), v0y = at(kRowV0 + 1), v0z = at(kRowV0 + 2);
   const V e2x = at.edge(kRowV2, v0x), e2y = at.edge(kRowV2 + 1, v0y), e2z = at.edge(kRowV2 + 2, v0z);
   out.un = xor_sign(fmadd(e2x, cx, fmadd(e2y, cy, e2z * cz)), det);
@@ -209,11 +251,11 @@ struct MtBest {
   bool found;
 };
 
-// The step at slot i, whose v0x position is p (mt_steps), for the ray `r` from the origin part `o`.
-template <class V, bool TminZero, MtPretest P>
-RAYVEC_INLINE void mt_closest_step(const float* p, uint32_t i, const RayLanes<V>& r, const MtOrigin<V>& o,
+// The step at slot i, whose lanes `at` reads (mt_steps), for the ray `r` from the origin part `o`.
+template <class V, bool TminZero, MtPretest P, class At>
+RAYVEC_INLINE void mt_closest_step(const At& at, uint32_t i, const RayLanes<V>& r, const MtOrigin<V>& o,
                                    typename V::Mask active, V neg_lo, MtBest<V>& b) {
-  const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleLanes<V>{p}, r, o);
+  const MtNumerators<V> c = mt_numerator_values<V>(at, r, o);
   const auto pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, b.hi);
   if (!pre.passes()) return;
   // the ordered tests (NaN and |det| = 0 fail them) and the exact depth test, only for steps where
@@ -289,19 +331,19 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
     neg_lo[k] = V::broadcast(0.0f) - q[k].lo;
   }
   mt_steps<V>(
-      T, begin, end, [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
-        const MtTriangleLanes<V> at{p};
+      T, begin, end, [&](const auto& at, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
         if constexpr (SharedOrigin) {
           // the rays' steps unrolled: left a loop (g++ does for four rays and more), each ray's lanes
           // and best hit are reloaded from memory at every step
           const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
 #pragma GCC unroll 8
           for (int k = 0; k < R; ++k)
-            mt_closest_step<V, TminZero, P>(p, i, q[k].r, o, active, neg_lo[k], q[k].b);
+            mt_closest_step<V, TminZero, P>(at, i, q[k].r, o, active, neg_lo[k], q[k].b);
         } else {
+          const MtNormal<V> ng = at.normal();  // once for the R rays
           for (int k = 0; k < R; ++k)
-            mt_closest_step<V, TminZero, P>(p, i, q[k].r, mt_origin_values<V>(at, q[k].r), active, neg_lo[k],
-                                            q[k].b);
+            mt_closest_step<V, TminZero, P>(at, i, q[k].r, mt_origin_values<V>(at, q[k].r, ng), active,
+                                            neg_lo[k], q[k].b);
         }
         return false;
       });
@@ -324,8 +366,8 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
   uint32_t winner = 0;
   V hi = V::broadcast(initial * kMtWiden);
   const V neg_lo = V::broadcast(0.0f) - V::broadcast(mt_lower(ray.tmin));
-  const auto step = [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
-    const MtNumerators<V> c = mt_numerator_values<V>(MtTriangleLanes<V>{p}, r);
+  const auto step = [&](const auto& at, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
+    const MtNumerators<V> c = mt_numerator_values<V>(at, r);
     const auto pre = mt_pretest<V, TminZero, P>(c, active, neg_lo, hi);
     if (!pre.passes()) return false;
     const V t = c.tn / c.adet;
@@ -405,8 +447,8 @@ RAYVEC_INLINE bool mt_any_hit_step(const TriangleArrays& T, uint32_t i, MtNumera
 template <class V>
 RAYVEC_INLINE bool occluded_mt_float_lanes(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                            const MtAnyHitRay<V>& q, const HitFilter* filter) {
-  const auto step = [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
-    return mt_any_hit_step<V>(T, i, mt_numerator_values<V>(MtTriangleLanes<V>{p}, q.r), active, q, filter);
+  const auto step = [&](const auto& at, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
+    return mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q.r), active, q, filter);
   };
   return mt_steps<V>(T, begin, end, step);
 }

@@ -79,8 +79,7 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
   for (int k = 0; k < R; ++k) q[k] = mt_any_hit_ray<V>(*rays[k]);
   unsigned done = 0;
   mt_steps<V>(
-      T, begin, end, [&](const float* p, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
-        const MtTriangleLanes<V> at{p};
+      T, begin, end, [&](const auto& at, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
         const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
 #pragma GCC unroll 8
         for (int k = 0; k < R; ++k)

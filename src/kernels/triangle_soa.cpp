@@ -15,22 +15,24 @@ constexpr std::int64_t kParallelFill = 2048;  // fewer slots: fill on the callin
 
 }  // namespace
 
-TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order) {
+TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order, Normals normals) {
   const std::size_t n = order.empty() ? mesh.size() : order.size();
   // slot_offset is 32-bit: every float of the blocks must have an offset below 2^32
   constexpr std::size_t kMaxSlots = (std::size_t(1) << 32) / kSlotRows - 2 * kBlock;
   if (n > kMaxSlots)
     throw std::length_error("too many triangles for TriangleSoA (at most " + std::to_string(kMaxSlots) + ")");
   count_ = static_cast<uint32_t>(n);
-  padded_ = (count_ + kBlock - 1) / kBlock * kBlock + kBlock;  // one block of slack
+  padded_ = padded_slots(count_);  // one block of slack
   // uninitialized: the fill below writes every slot, in parallel, so the pages are first touched
   // by the threads that fill them (a serial memset was a third of the fill's time on 1M triangles)
   blocks_ = allocate_large_buffer(std::size_t(padded_) * kSlotRows * 4);
+  if (normals == Normals::stored) normals_ = allocate_large_buffer(std::size_t(padded_) * kNormalBytes);
+  float* ng_rows = static_cast<float*>(normals_.get());
 
-  // row k of every block starts kBlock·k 4-byte values into the block; hot rows (v0, ng, v2, v1:
+  // row k of every block starts kBlock·k 4-byte values into the block; the vertex rows (v0, v2, v1:
   // what the float `mt` kernel reads) first, then the ids. Each row holds one type (the id row
   // only int32, the others only float).
-  constexpr uint32_t kV0 = kRowV0, kNg = kRowNg, kV2 = kRowV2, kV1 = kRowV1, kId = kRowId;
+  constexpr uint32_t kV0 = kRowV0, kV2 = kRowV2, kV1 = kRowV1, kId = kRowId;
   float* base = static_cast<float*>(blocks_.get());
   int32_t* ids = reinterpret_cast<int32_t*>(base + std::size_t(kId) * kBlock);
 
@@ -45,22 +47,29 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
       for (uint32_t k = 0; k < kSlotRows; ++k)
         if (k != kId) slot[k * kBlock] = 0.0f;
       id = -1;
+      if (ng_rows)
+        for (uint32_t a = 0; a < 3; ++a) ng_rows[normal_offset(uint32_t(i)) + a * kBlock] = 0.0f;
       continue;
     }
     const Vec3f p0 = mesh.vertex(tri, 0), p1 = mesh.vertex(tri, 1), p2 = mesh.vertex(tri, 2);
-    const Vec3f e1 = p1 - p0, e2 = p2 - p0, ng = cross(e2, e1);
-    const Vec3f rows[] = {p0, ng, p2, p1};
-    const int first[] = {kV0, kNg, kV2, kV1};
-    for (uint32_t r = 0; r < 4; ++r)
+    const Vec3f rows[] = {p0, p2, p1};
+    const int first[] = {kV0, kV2, kV1};
+    for (uint32_t r = 0; r < 3; ++r)
       for (uint32_t a = 0; a < 3; ++a) slot[(first[r] + a) * kBlock] = rows[r][int(a)];
     id = static_cast<int32_t>(tri);
+    if (ng_rows) {
+      // the kernels' mt_normal, in the same float operations: e2 × e1
+      const Vec3f ng = cross(p2 - p0, p1 - p0);
+      for (uint32_t a = 0; a < 3; ++a) ng_rows[normal_offset(uint32_t(i)) + a * kBlock] = ng[int(a)];
+    }
   }
   const auto row = [&](int k) -> const float* { return base + std::size_t(k) * kBlock; };
-  arrays_ = TriangleArrays{row(kV0),     row(kV0 + 1), row(kV0 + 2), row(kV1),     row(kV1 + 1),
-                           row(kV1 + 2), row(kV2),     row(kV2 + 1), row(kV2 + 2), row(kNg),
-                           row(kNg + 1), row(kNg + 2), ids,          count_};
+  arrays_ = TriangleArrays{row(kV0), row(kV0 + 1), row(kV0 + 2), row(kV1), row(kV1 + 1), row(kV1 + 2),
+                           row(kV2), row(kV2 + 1), row(kV2 + 2), ids,      ng_rows,      count_};
 }
 
-std::size_t TriangleSoA::bytes() const { return std::size_t(padded_) * kSlotRows * 4; }
+std::size_t TriangleSoA::bytes() const {
+  return std::size_t(padded_) * (kSlotBytes + (stores_normals() ? kNormalBytes : 0));
+}
 
 }  // namespace rayvec

@@ -170,7 +170,7 @@ TEST(TriangleSoA, ParallelFillWritesEverySlotInOrder) {
     ASSERT_EQ(soa.id(s), -1);
     const Vec3f p = soa.v0(s), q = soa.v1(s), r = soa.v2(s);
     ASSERT_TRUE(p.x == 0 && q.y == 0 && r.z == 0 && soa.arrays().v1x[slot_offset(s)] == 0 &&
-                soa.arrays().ngz[slot_offset(s)] == 0);
+                soa.arrays().ng[normal_offset(s) + 2 * kSlotBlock] == 0);
   }
 }
 

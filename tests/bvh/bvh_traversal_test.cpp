@@ -40,6 +40,7 @@ class BvhTraversal : public test::BvhCaseTest {
     o.width = GetParam().width;
     o.direct_leaf = direct_leaf_;
     o.merge_steps = merge_steps_;
+    o.stored_normals = stored_normals_;
     return o;
   }
 
@@ -73,6 +74,7 @@ class BvhTraversal : public test::BvhCaseTest {
 
   int direct_leaf_ = -1;                        // BvhOptions::direct_leaf of expect_same's BvhAccelerator
   int merge_steps_ = BvhOptions{}.merge_steps;  // and its merge_steps
+  int stored_normals_ = BvhOptions{}.stored_normals;  // and its stored_normals
 };
 
 TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceOnRandomSoups) {
@@ -99,6 +101,60 @@ TEST_P(BvhTraversal, ClosestAndAnyHitMatchBruteForceWithSpatialSplits) {
   mesh.add_triangle({-0.5f, 0.0f, 0.0f}, {inf, 0.1f, 0.0f}, {0.0f, 0.5f, 0.0f});
   mesh.add_triangle({-inf, -inf, -inf}, {inf, inf, inf}, {0.0f, 0.0f, 0.0f});
   expect_same(mesh, rays);
+}
+
+// The float `mt` kernels read the normals from the triangle rows or form them per step: the same
+// hits either way, single rays and packets (closest_stream). By default a mesh of long slivers, whose
+// spatial-split references with stored normals would pass kBvhBytesPerTriangle, gets formed ones
+// (and then fits, with the float kernels of the SIMD ISAs), an even mesh stored ones; no other
+// intersector stores them.
+TEST_P(BvhTraversal, StoredAndFormedNormalsMatchBruteForce) {
+  const TriangleMesh soup = test::random_soup(2500, 0.1f, 42), slivers = test::long_slivers(3000, 31);
+  const std::vector<Ray> rays = test::random_rays(1500, 1.5f, 43);
+  const BruteForce brute(slivers, config());
+  for (const int stored : {0, 1}) {
+    stored_normals_ = stored;
+    expect_same(soup, rays);
+    expect_same(slivers, rays);
+    const BvhAccelerator bvh(slivers, config(), options());
+    EXPECT_EQ(bvh.triangles().stores_normals(), stored == 1 && GetParam().intersector == Intersector::mt);
+    std::vector<Ray> tiles;  // 4×4 camera tiles toward the slivers' floor, for the packet leaves
+    for (int t = 0; t < 64; ++t)
+      for (int k = 0; k < 16; ++k)
+        tiles.push_back(Ray{{0.0f, 1.5f, -2.0f},
+                            {0.04f * float(t % 8 - 4) + 0.01f * float(k % 4),
+                             -0.6f + 0.03f * float(t / 8) + 0.008f * float(k / 4), 1.0f}});
+    std::vector<Hit> hits(tiles.size());
+    bvh.closest_stream(tiles.data(), hits.data(), hits.size());
+    int hit = 0;
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+      const Hit want = brute.closest(tiles[i]);
+      hit += want.hit();
+      ASSERT_EQ(hits[i].tri, want.tri) << "stored " << stored << " ray " << i;
+      if (want.hit()) {
+        ASSERT_EQ(hits[i].t, want.t) << "stored " << stored << " ray " << i;
+        ASSERT_EQ(hits[i].u, want.u) << "stored " << stored << " ray " << i;
+        ASSERT_EQ(hits[i].v, want.v) << "stored " << stored << " ray " << i;
+      }
+    }
+    EXPECT_GT(hit * 4, int(tiles.size())) << "the tiles should hit the slivers";
+  }
+  stored_normals_ = -1;
+  const bool mt = GetParam().intersector == Intersector::mt;
+  const BvhAccelerator long_ones(slivers, config(), options()),
+      even(test::sphere(1.0f, 60, 80), config(), options());
+  EXPECT_FALSE(long_ones.triangles().stores_normals());
+  EXPECT_EQ(even.triangles().stores_normals(), mt && GetParam().isa != Isa::scalar);
+  // the budget holds for the float kernels of the SIMD ISAs (8 or 16 lanes; double kernels have half)
+  if (GetParam().isa != Isa::scalar && triangle_kernels(GetParam().isa, GetParam().intersector).width >= 8) {
+    EXPECT_LE(double(long_ones.bytes()), kBvhBytesPerTriangle * double(slivers.size()));
+    EXPECT_LE(double(even.bytes()), kBvhBytesPerTriangle * double(60 * 80 * 2));
+  }
+  if (mt) {  // the slivers would pass the budget with their normals
+    stored_normals_ = 1;
+    const BvhAccelerator stored(slivers, config(), options());
+    EXPECT_GT(double(stored.bytes()), kBvhBytesPerTriangle * double(slivers.size()));
+  }
 }
 
 // The traversals' two leaf calls — through the kernel table, and the float kernel called directly

@@ -320,6 +320,45 @@ TEST_P(KernelEquivalence, OccludedBatchFromOneOriginMatchesOneRayAtATime) {
   EXPECT_GT(freed * 8, int(rays.size())) << "the filters should clear some rays";
 }
 
+// The float `mt` kernels read stored normals or form them per step from the edges
+// (TriangleSoA's Normals): bit for bit the same hits, for one ray, pairs and groups from one origin
+// (closest_batch), and any-hit alone and in groups; the other intersectors never read them.
+TEST_P(KernelEquivalence, StoredAndFormedNormalsGiveTheSameHits) {
+  const Param p = GetParam();
+  const TriangleKernels& k = triangle_kernels(p.isa, p.intersector);
+  const TriangleMesh triangles = paper_triangles(kTriangleChunk + 300, 7);
+  const TriangleSoA stored(triangles, {}, Normals::stored), formed(triangles, {}, Normals::formed);
+  ASSERT_TRUE(stored.stores_normals());
+  ASSERT_FALSE(formed.stores_normals());
+  EXPECT_EQ(stored.bytes(), formed.bytes() + stored.padded_size() * TriangleSoA::kNormalBytes);
+  std::vector<Ray> rays;
+  const RayBatch camera = paper_camera_rays(16);  // from one origin: the group kernels
+  for (std::size_t i = 0; i < camera.size(); ++i) rays.push_back(camera[i]);
+  for (const Ray& r : random_scene().rays) rays.push_back(r);  // from many: pairs
+  std::vector<Hit> a(rays.size()), b(rays.size());
+  closest_batch(k, stored.arrays(), 0, stored.size(), rays.data(), a.data(), a.size());
+  closest_batch(k, formed.arrays(), 0, formed.size(), rays.data(), b.data(), b.size());
+  std::vector<uint8_t> oa(rays.size()), ob(rays.size());
+  occluded_batch(k, stored.arrays(), 0, stored.size(), rays.data(), oa.data(), oa.size(), nullptr);
+  occluded_batch(k, formed.arrays(), 0, formed.size(), rays.data(), ob.data(), ob.size(), nullptr);
+  int hits = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    Hit one_stored, one_formed;
+    k.closest(stored.arrays(), 7, stored.size(), rays[i], one_stored);  // a head step too
+    k.closest(formed.arrays(), 7, formed.size(), rays[i], one_formed);
+    for (const auto& [x, y] : {std::pair{a[i], b[i]}, std::pair{one_stored, one_formed}}) {
+      ASSERT_EQ(x.tri, y.tri) << "ray " << i;
+      ASSERT_TRUE(!x.hit() || (x.t == y.t && x.u == y.u && x.v == y.v)) << "ray " << i;
+    }
+    ASSERT_EQ(oa[i], ob[i]) << "ray " << i;
+    ASSERT_EQ(k.occluded(stored.arrays(), 3, stored.size(), rays[i], nullptr),
+              k.occluded(formed.arrays(), 3, formed.size(), rays[i], nullptr))
+        << "ray " << i;
+    hits += a[i].hit();
+  }
+  EXPECT_GT(hits * 10, int(rays.size()));
+}
+
 TEST_P(KernelEquivalence, RandomTrianglesMatchScalar) { check(random_scene()); }
 TEST_P(KernelEquivalence, ClosedSphereMatchesScalar) { check(sphere_scene()); }
 TEST_P(KernelEquivalence, EdgeAimedGridMatchesScalar) { check(grid_scene()); }
