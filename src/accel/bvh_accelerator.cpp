@@ -25,19 +25,18 @@ bool direct_leaf(const TraceConfig& config, const BvhOptions& options) {
   return options.direct_leaf != 0;
 }
 
-// Whether the triangle rows of a tree of `tree_bytes` and `slots` slots store the `mt` normals
-// (BvhOptions::stored_normals).
-Normals normals(const TraceConfig& config, const BvhOptions& options, std::size_t tree_bytes,
-                std::size_t slots, std::size_t triangles) {
-  if (config.intersector != Intersector::mt || options.stored_normals == 0) return Normals::formed;
-  if (options.stored_normals > 0) return Normals::stored;
+}  // namespace
+
+Normals bvh_normals(Intersector intersector, int stored_normals, std::size_t tree_bytes, std::size_t slots,
+                    std::size_t triangles) {
+  if (intersector != Intersector::mt || stored_normals == 0) return Normals::formed;
+  if (stored_normals > 0) return Normals::stored;
+  if (triangles >= kFormedNormalsFrom) return Normals::formed;
   const std::size_t padded = TriangleSoA::padded_slots(uint32_t(slots));
   const double bytes =
       double(tree_bytes) + double(padded * (TriangleSoA::kSlotBytes + TriangleSoA::kNormalBytes));
   return bytes <= kBvhBytesPerTriangle * double(triangles) ? Normals::stored : Normals::formed;
 }
-
-}  // namespace
 
 BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& config, const BvhOptions& options)
     : config_(config),
@@ -59,7 +58,8 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
   sort_leaf_slots(tree_, binary.order);
   tree_.set_box_epsilon(options.box_epsilon);
   tris_ = TriangleSoA(mesh, binary.order,
-                      normals(config, options, tree_.bytes(), binary.order.size(), mesh.size()));
+                      bvh_normals(config.intersector, options.stored_normals, tree_.bytes(),
+                                  binary.order.size(), mesh.size()));
 }
 
 bool packet_coherent(const Ray* rays, std::size_t n) {

@@ -30,15 +30,23 @@ struct BvhOptions {
   // intersectors always use the table. Same results either way.
   int direct_leaf = -1;
   // Whether the triangle rows store the normals the float `mt` kernels read (12 bytes a slot) or
-  // leave the kernels to form them per step: −1 = stored for `mt` while the BVH and its triangles
-  // fit in kBvhBytesPerTriangle bytes a triangle (long triangles' spatial-split references pass
-  // it), 1 = stored for `mt`, 0 = never stored. No other intersector reads them. Same hits either
-  // way (benchmarks.md#decision-normal-budget).
+  // leave the kernels to form them per step: −1 = bvh_normals' default, 1 = stored for `mt`, 0 =
+  // never stored. No other intersector reads them. Same hits either way.
   int stored_normals = -1;
 };
 
 // The memory budget of a BVH with its triangle rows, in bytes per triangle of the mesh.
 inline constexpr double kBvhBytesPerTriangle = 64.0;
+// From this many triangles the kernels form the normals: the leaves' rows no longer stay in cache,
+// and fewer bytes a leaf pay for the arithmetic.
+inline constexpr std::size_t kFormedNormalsFrom = std::size_t(1) << 18;
+
+// Whether a BVH of `tree_bytes` over `slots` triangle slots (padding included) for a mesh of
+// `triangles` stores the `mt` normals (BvhOptions::stored_normals): by default for `mt` on meshes
+// below kFormedNormalsFrom triangles whose tree and rows with normals fit kBvhBytesPerTriangle
+// (long triangles' spatial-split references do not) (benchmarks.md#decision-normal-budget).
+Normals bvh_normals(Intersector intersector, int stored_normals, std::size_t tree_bytes, std::size_t slots,
+                    std::size_t triangles);
 
 // cos of the widest angle between a packet's first direction and another for closest_group to
 // trace the group as a packet (about 8 degrees).

@@ -157,6 +157,26 @@ TEST_P(BvhTraversal, StoredAndFormedNormalsMatchBruteForce) {
   }
 }
 
+// The default: stored `mt` normals unless the tree and its rows would pass the budget with them or
+// the mesh is large; never for the other intersectors; the option overrides for `mt` only.
+TEST(BvhNormals, StoredForMtOnSmallMeshesWithinTheBudget) {
+  // 10,000 triangles and 40,000 bytes of nodes leave 600,000 bytes: 11,536 slots of 52 bytes (a
+  // multiple of 16, one block of slack included), so 11,520 slots in use fit and 11,521 do not
+  const std::size_t n = 10000, tree = 40000;
+  ASSERT_EQ(TriangleSoA::kSlotBytes + TriangleSoA::kNormalBytes, 52u);
+  EXPECT_EQ(bvh_normals(Intersector::mt, -1, tree, n, n), Normals::stored);
+  EXPECT_EQ(bvh_normals(Intersector::mt, -1, tree, 11520, n), Normals::stored);
+  EXPECT_EQ(bvh_normals(Intersector::mt, -1, tree, 11521, n), Normals::formed);
+  EXPECT_EQ(bvh_normals(Intersector::mt, 1, tree, 2 * n, n), Normals::stored);
+  EXPECT_EQ(bvh_normals(Intersector::mt, 0, tree, n, n), Normals::formed);
+  EXPECT_EQ(bvh_normals(Intersector::mt, -1, 0, kFormedNormalsFrom - 1, kFormedNormalsFrom - 1),
+            Normals::stored);
+  EXPECT_EQ(bvh_normals(Intersector::mt, -1, 0, kFormedNormalsFrom, kFormedNormalsFrom), Normals::formed);
+  for (const Intersector other :
+       {Intersector::paper, Intersector::mt64, Intersector::watertight, Intersector::watertight64})
+    for (const int option : {-1, 0, 1}) EXPECT_EQ(bvh_normals(other, option, tree, n, n), Normals::formed);
+}
+
 // The traversals' two leaf calls — through the kernel table, and the float kernel called directly
 // (AVX2 and AVX-512) — both equal brute force, with tmin < 0, = 0 and > 0 (the direct `mt` call
 // picks the kernel's tmin = 0 form itself). With the `mt` intersector on AVX2 and AVX-512 the
