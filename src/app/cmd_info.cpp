@@ -1,10 +1,11 @@
 // `rayvec info`: what this CPU offers, which ISA rayvec picks and what it chooses for it (kernel
-// pre-test, BVH shape), threads, library versions, CUDA.
+// pre-test, BVH shape, where the normals live), threads, library versions, CUDA.
 #include <omp.h>
 
 #include <cstdio>
 #include <string_view>
 
+#include "accel/bvh_accelerator.h"
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/device_option.h"
@@ -53,6 +54,10 @@ void register_info_command(CommandLine& cli) {
       std::printf("\n");
       if (ok) print_bvh_defaults(isa, f.vendor);
     }
+    std::printf(
+        "bvh normals (mt): stored below %zu triangles while the tree fits %.0f bytes a triangle, "
+        "else formed per step\n",
+        kFormedNormalsFrom, kBvhBytesPerTriangle);
     std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
     std::printf("compiler: g++ %s, OpenMP %d\n", __VERSION__, _OPENMP);
     print_cuda_info();

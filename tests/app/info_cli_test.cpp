@@ -1,12 +1,13 @@
 // `rayvec info` names, for every ISA this CPU supports, the choices rayvec makes for it (the kernels'
-// pre-test by CPU vendor, the BVH's node width and leaf size by mesh size), so a benchmark row can be
-// traced to the kernels and the tree that produced it.
+// pre-test by CPU vendor, the BVH's node width and leaf size by mesh size), and where the BVH keeps
+// the `mt` normals, so a benchmark row can be traced to the kernels and the tree that produced it.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
 #include <string_view>
 
+#include "accel/bvh_accelerator.h"
 #include "bvh/bvh_traversal.h"
 #include "kernels/triangle_kernels.h"
 #include "platform/isa.h"
@@ -53,6 +54,15 @@ TEST(InfoCli, NamesTheBvhShapeOfEverySupportedSimdIsa) {
         std::to_string(default_leaf_steps(isa, kWideNodeTriangles)) + "-step from there";
     EXPECT_NE(line.find(expected), std::string::npos) << line << "\nexpected: " << expected;
   }
+}
+
+TEST(InfoCli, NamesWhereTheBvhKeepsTheMtNormals) {
+  const auto r = test::run_cli("info");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string expected = "bvh normals (mt): stored below " + std::to_string(kFormedNormalsFrom) +
+                               " triangles while the tree fits " + std::to_string(int(kBvhBytesPerTriangle)) +
+                               " bytes a triangle, else formed per step";
+  EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
 }
 
 }  // namespace
