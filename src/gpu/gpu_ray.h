@@ -1,7 +1,7 @@
 // What the device kernels read and write: rays and hits as plain structs (the host's Ray and Hit
 // have the same fields; gpu_scene.cpp converts), and a view of one triangle in either layout the
 // kernels use — 12 floats per triangle (AoS: global memory and the shared tiles of the study) or
-// 12 rows of floats (SoA: rayvec's layout, in global memory and in the SoA shared tiles).
+// 12 rows of floats (SoA: in global memory and in the SoA shared tiles).
 #pragma once
 #include <cstdint>
 

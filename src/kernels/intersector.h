@@ -25,8 +25,9 @@ enum class Intersector {
   // zero-area triangle) rejects, so tiny triangles are hit. Division-free barycentric tests with the
   // sign of det folded in: u·|det| >= 0, v·|det| >= 0, (u+v)·|det| <= |det| — closed edges, evaluated
   // in float with FMA in the SIMD kernels, so a ray through a shared edge hits at least one side
-  // except for rounding (not guaranteed watertight). Computed over the precomputed normal
-  // ng = e2 × e1 (det = d·ng, t·det = (v0 − o)·ng); t = (t·det)/det by one correctly rounded
+  // except for rounding (not guaranteed watertight). Computed over the normal ng = e2 × e1
+  // (det = d·ng, t·det = (v0 − o)·ng), stored with the triangles or formed per step by the same
+  // float operations (the same bits either way); t = (t·det)/det by one correctly rounded
   // division, accepted when tmin <= t <= tmax. Every comparison is ordered: a NaN or Inf-derived NaN anywhere
   // fails it, so NaN input never produces a hit and never produces a NaN output. Degenerate
   // (zero-area) triangles have det = 0 and never hit.

@@ -9,9 +9,9 @@
 // division-free barycentric test (the sign of det folded into u and v) with one correctly rounded
 // division for t only when a lane survives, u and v tracked per lane, ordered comparisons so NaN never hits,
 // and ties resolved towards the lower triangle id. The float `mt` path (closest_mt_float, mt_float.inl) goes
-// further: precomputed normal, a conservative division-free depth pre-test against the nearest hit
-// of any lane, divisions only for the final hit, and several rays per triangle load (closest_group).
-// Each choice and what it measured: benchmarks.md#decision-precomputed-normal,
+// further: the normal ng = e2 × e1 shared by the rays of a step, a conservative division-free depth pre-test
+// against the nearest hit of any lane, divisions only for the final hit, and several rays per triangle load
+// (closest_group). Each choice and what it measured: benchmarks.md#decision-precomputed-normal,
 // #decision-depth-pretest, #decision-early-outs, #decision-fma and #decision-rays-per-triangle-load.
 
 template <class V>

@@ -5,7 +5,8 @@
 // here, as there.
 //
 // Möller–Trumbore rewritten with the scalar triple product identities in the form Embree's
-// Moeller intersector uses, over the precomputed normal ng = e2 × e1 and s = v0 − o, c = s × d:
+// Moeller intersector uses, over the normal ng = e2 × e1 (stored or formed per step: MtNormal) and
+// s = v0 − o, c = s × d:
 //   det = d · ng,  u·det = −(e2 · c),  v·det = e1 · c,  t·det = s · ng
 // — one cross product per ray and triangle instead of two (21 multiply/adds instead of 27). The sign
 // of det is folded into the three numerators (division-free, closed edge tests as before). The
