@@ -3,13 +3,14 @@
 another's throughput (llvm-mca's port model) where it cannot run there.
 
     scripts/port_model.py [--isa avx512|avx2] [--rays 1|2|4|8] [--pretest ordered|sign]
-                          [--origin shared|separate] [--cpu NAME ...] [--max-cycles C] [OBJECT ...]
+                          [--origin shared|separate] [--normals stored|formed] [--cpu NAME ...]
+                          [--max-cycles C] [OBJECT ...]
 
 Disassembles the `closest_mt_float_rays` kernel for R rays (by default the group that rays from one
 origin, as a camera's are, go through with that pre-test: 4 with the ordered one, 8 with the sign
 bits; a pair is from one origin unless --origin separate) or, for --rays 1, `closest_mt_float_one`
 (tmin = 0) of an ISA unit of a built tree, follows its
-triangle loop along the path a step takes when no lane passes the pre-test (every early-out taken:
+triangle loop — of the walk over stored normals, or with --normals formed the one forming them — along the path a step takes when no lane passes the pre-test (every early-out taken:
 the path almost every step takes), and runs that straight-line body through `llvm-mca` for each
 --cpu (default: icelake-server, the model closest to the Xeons' Golden Cove cores in LLVM 14, and
 skylake-avx512). Prints cycles per loop iteration, the busiest ports and tests per cycle (16 or 8
@@ -68,8 +69,9 @@ def disassembly(out):
     return code
 
 
-def loop_body(code, rays):
-    """The loop's straight-line path with every branch after a mask test taken (no lane passed)."""
+def loop_body(code, rays, normals):
+    """The loop's straight-line path with every branch after a mask test taken (no lane passed), in
+    the walk that reads stored normals or the one that forms them (the kernel has both)."""
     index = {addr: i for i, (addr, _) in enumerate(code)}
     # a step's early-out: a conditional branch on a mask register (AVX-512), on a vtestps, or on sign
     # bits a vmovmskps took in the three instructions before it (AVX2)
@@ -84,28 +86,41 @@ def loop_body(code, rays):
     def mask_tests(tail, head):
         return sum(1 for i in exits if head <= code[i][0] <= tail)
 
-    # the triangle loop: the shortest conditional backward branch around a step's two mask tests
-    # (pre-test and exact test) for each ray
+    def path(tail, head):
+        body, i = [], index[head]
+        for _ in range(10000):
+            if i >= len(code):
+                return None
+            addr, text = code[i]
+            if text.startswith("j"):
+                target = int(text.split()[1], 16) if re.fullmatch(r"j\w+\s+[0-9a-f]+", text) else None
+                if addr == tail:
+                    return body
+                if i in exits and target is not None:  # no lane passed: skip ahead
+                    i = index.get(target, len(code))
+                    continue
+            elif not text.startswith("nop"):
+                body.append(text)
+            i += 1
+        return None
+
+    # the triangle loops: conditional backward branches around a step's two mask tests (pre-test and
+    # exact test) for each ray whose no-hit path closes; of each walk's, the shortest
     loops = [(addr, int(t.split()[1], 16)) for addr, t in code
              if re.fullmatch(r"j(?!mp)\w+\s+[0-9a-f]+", t) and int(t.split()[1], 16) < addr]
-    loops = [span for span in loops if mask_tests(*span) >= 2 * rays]
-    if not loops:
+    bodies = [b for b in (path(*span) for span in loops if mask_tests(*span) >= 2 * rays) if b]
+    if not bodies:
         sys.exit("port_model: no loop found")
-    tail, head = min(loops, key=lambda span: span[0] - span[1])
-    body, i = [], index[head]
-    for _ in range(10000):
-        addr, text = code[i]
-        if text.startswith("j"):
-            target = int(text.split()[1], 16) if re.fullmatch(r"j\w+\s+[0-9a-f]+", text) else None
-            if addr == tail:
-                return body
-            if i in exits and target is not None:  # no lane passed: skip ahead
-                i = index[target]
-                continue
-        elif not text.startswith("nop"):
-            body.append(text)
-        i += 1
-    sys.exit("port_model: the loop path did not close")
+    # the walk loading the normal has the fewest products a step; the one forming it, its cross
+    # product more (the shortest such loop: longer ones are copies the compiler unrolled)
+    def products(b):
+        return sum(1 for t in b if t.startswith(("vmulps", "vfmadd", "vfmsub", "vfnmadd", "vfnmsub")))
+
+    fewest = min(products(b) for b in bodies)
+    chosen = [b for b in bodies if (products(b) == fewest) == (normals == "stored")]
+    if not chosen:
+        sys.exit(f"port_model: no loop with {normals} normals found")
+    return min(chosen, key=len)
 
 
 def model(body, cpu):
@@ -135,6 +150,8 @@ def main():
                    help="the pre-test form (default: what Intel runs, ordered on AVX-512, sign on AVX2)")
     p.add_argument("--origin", choices=("shared", "separate"), default="shared",
                    help="--rays 2: the kernel for rays from one origin (default) or from two")
+    p.add_argument("--normals", choices=("stored", "formed"), default="stored",
+                   help="the walk over stored normals (brute force, small BVHs; default) or formed ones")
     p.add_argument("--cpu", action="append", help="llvm-mca -mcpu (repeatable)")
     p.add_argument("--max-cycles", type=float, help="exit 1 when the first model's cycles exceed this")
     a = p.parse_args()
@@ -146,10 +163,11 @@ def main():
         print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
         sys.exit(77)
     sym = symbol(a.isa, a.rays, a.pretest, a.rays > 2 or a.origin == "shared")
-    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays)
+    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays, a.normals)
     tests = ISAS[a.isa][1] * a.rays
     print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "
-          f"({a.isa}, {a.rays} ray(s){', ' + a.origin + ' origin' if a.rays == 2 else ''}, {a.pretest} pre-test)")
+          f"({a.isa}, {a.rays} ray(s){', ' + a.origin + ' origin' if a.rays == 2 else ''}, {a.pretest} pre-test, "
+          f"{a.normals} normals)")
     first = None
     for cpu in a.cpu or ["icelake-server", "skylake-avx512"]:
         cycles, busiest = model(body, cpu)
