@@ -15,7 +15,7 @@
 // - the unnormalized normal ng = e2 × e1 of the float `mt` kernels is stored in a second blocked
 //   buffer (3 rows a block, 12 bytes a slot) or, with Normals::formed, not at all: the kernels then
 //   form it per step from the edges, with the operations of the fill, so the hits are bit for bit
-//   the same; a BVH whose triangles would pass 64 bytes each drops it
+//   the same; a BVH drops it on large meshes and where its triangles would pass 64 bytes each
 //   (benchmarks.md#decision-normal-budget).
 // Rows are 64-byte aligned; the slots are padded with zero-area triangles (id −1) to a multiple of
 // kBlock plus one block of slack, so a kernel may always load a full register at any aligned slot
@@ -73,7 +73,7 @@ struct TriangleArrays {
 };
 
 // Whether a TriangleSoA stores the normals ng (12 bytes a slot more) or leaves the kernels to
-// form them (the BVH on meshes whose references would pass its memory budget: bvh_accelerator.h).
+// form them (the BVH on large meshes and over its memory budget: bvh_normals in bvh_accelerator.h).
 enum class Normals { stored, formed };
 
 class TriangleSoA {
