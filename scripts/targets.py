@@ -12,7 +12,8 @@ Sections (each can be skipped; one whose tool is missing is skipped with the rea
            and on AVX-512 the mt pre-tests against each other (`bench paper --pretest`)
   obj      `bench obj` on the 1M-triangle sphere: rayvec's reader on one thread
   embree   `bench rays --vs-embree` (one thread, alternating rounds, median ratio per set) on
-           sphere4k, WusonOBJ (Debian's assimp-testmodels) and the 1M sphere at AVX2 and AVX-512;
+           sphere4k, WusonOBJ (Debian's assimp-testmodels) and the 1M sphere at AVX2 and AVX-512,
+           the 1M sphere also with its normals stored (`--stored-normals 1`) against the default;
            bytes per triangle of each tree and of assimp's regr01 (long triangles)
   povray   every scenes/*.json and the 1M sphere's scene, `rayvec render --spp 1 --threads 1`
            against POV-Ray 3.7 on the converted scene (scripts/scene_to_pov.py), CPU time of the
@@ -190,6 +191,13 @@ class Targets:
                     out = run([self.bin, "bench", "rays", mesh, "--vs-embree", "--json", "--threads", "1",
                                "--builds", "1", "--repeats", "3", "--isa", isa])[0]
                     runs.setdefault((isa, mesh), []).append(json.loads(out))
+                # the 1M sphere's normals the other way (stored), the open vendor question of
+                # docs/benchmarks.md#decision-normal-budget
+                log(f"targets: bench rays {os.path.basename(meshes[-1])} --isa {isa} --stored-normals 1, "
+                    f"round {r + 1} of {self.rounds}")
+                out = run([self.bin, "bench", "rays", meshes[-1], "--vs-embree", "--json", "--threads", "1",
+                           "--builds", "1", "--repeats", "3", "--isa", isa, "--stored-normals", "1"])[0]
+                runs.setdefault((isa, "stored"), []).append(json.loads(out))
         byte_counts = []
         for isa in isas:
             worst, cells = None, []
@@ -208,6 +216,14 @@ class Targets:
             self.row(f"{label}, every set", "≥ 1.0×", f"lowest {worst:.2f}×", worst >= 1.0)
             self.details.append(f"`bench rays --vs-embree --threads 1 --isa {isa}`, median ratio of {self.rounds} "
                                 f"alternating rounds, primary / packets / shadow / incoherent: " + "; ".join(cells) + ".")
+            ratio = lambda d, k: d[k]["mrays_per_s"] / d["embree"][k]["mrays_per_s"]
+            default, stored = runs[(isa, meshes[-1])], runs[(isa, "stored")]
+            rel = {k: median([ratio(b, k) / ratio(a, k) for a, b in zip(default, stored)]) for k in SETS}
+            self.details.append(
+                f"1M sphere, `--isa {isa}`: `--stored-normals 1` relative to the default (normals "
+                f"{'stored' if default[0].get('stored_normals') else 'formed per step'}), median of the per-round "
+                f"ratios, primary / packets / shadow / incoherent: " + " / ".join(f"{rel[k]:.3f}" for k in SETS) +
+                " (docs/benchmarks.md#decision-normal-budget).")
         regr = f"{ASSIMP}/regr01.obj"
         if os.path.exists(regr):
             for isa in isas:
