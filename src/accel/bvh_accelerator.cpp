@@ -32,9 +32,7 @@ Normals bvh_normals(Intersector intersector, int stored_normals, std::size_t tre
   if (intersector != Intersector::mt || stored_normals == 0) return Normals::formed;
   if (stored_normals > 0) return Normals::stored;
   if (triangles >= kFormedNormalsFrom) return Normals::formed;
-  const std::size_t padded = TriangleSoA::padded_slots(uint32_t(slots));
-  const double bytes =
-      double(tree_bytes) + double(padded * (TriangleSoA::kSlotBytes + TriangleSoA::kNormalBytes));
+  const double bytes = double(tree_bytes) + double(TriangleSoA::bytes_for(uint32_t(slots), Normals::stored));
   return bytes <= kBvhBytesPerTriangle * double(triangles) ? Normals::stored : Normals::formed;
 }
 

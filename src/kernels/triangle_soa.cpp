@@ -69,7 +69,7 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
 }
 
 std::size_t TriangleSoA::bytes() const {
-  return std::size_t(padded_) * (kSlotBytes + (stores_normals() ? kNormalBytes : 0));
+  return bytes_for(count_, stores_normals() ? Normals::stored : Normals::formed);
 }
 
 }  // namespace rayvec

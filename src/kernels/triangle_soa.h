@@ -89,8 +89,12 @@ class TriangleSoA {
   static constexpr uint32_t kPaddingSlot = 0xffffffffu;
   explicit TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order = {},
                        Normals normals = Normals::stored);
-  // The slots a TriangleSoA of `count` slots allocates (padding and slack included).
+  // The slots a TriangleSoA of `count` slots allocates (padding and slack included), and the bytes
+  // it holds for them.
   static uint32_t padded_slots(uint32_t count) { return (count + kBlock - 1) / kBlock * kBlock + kBlock; }
+  static std::size_t bytes_for(uint32_t count, Normals normals) {
+    return std::size_t(padded_slots(count)) * (kSlotBytes + (normals == Normals::stored ? kNormalBytes : 0));
+  }
 
   uint32_t size() const { return count_; }
   uint32_t padded_size() const { return padded_; }
