@@ -57,6 +57,11 @@ def run(cmd, cwd=None):
     return stdout, stderr, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
 
 
+def to_embree(run, ray_set):
+    """rayvec's rays per second over Embree's in one `bench rays --vs-embree --json` run."""
+    return run[ray_set]["mrays_per_s"] / run["embree"][ray_set]["mrays_per_s"]
+
+
 def median(values):
     return statistics.median(values)
 
@@ -203,8 +208,7 @@ class Targets:
             worst, cells = None, []
             for mesh in meshes:
                 name = os.path.basename(mesh).removesuffix(".obj")
-                med = {s: median([d[s]["mrays_per_s"] / d["embree"][s]["mrays_per_s"] for d in runs[(isa, mesh)]])
-                       for s in SETS}
+                med = {s: median([to_embree(d, s) for d in runs[(isa, mesh)]]) for s in SETS}
                 cells.append(f"{name} " + " / ".join(f"{med[s]:.2f}" for s in SETS))
                 low = min(med.values())
                 worst = low if worst is None else min(worst, low)
@@ -216,9 +220,8 @@ class Targets:
             self.row(f"{label}, every set", "≥ 1.0×", f"lowest {worst:.2f}×", worst >= 1.0)
             self.details.append(f"`bench rays --vs-embree --threads 1 --isa {isa}`, median ratio of {self.rounds} "
                                 f"alternating rounds, primary / packets / shadow / incoherent: " + "; ".join(cells) + ".")
-            ratio = lambda d, k: d[k]["mrays_per_s"] / d["embree"][k]["mrays_per_s"]
             default, stored = runs[(isa, meshes[-1])], runs[(isa, "stored")]
-            rel = {k: median([ratio(b, k) / ratio(a, k) for a, b in zip(default, stored)]) for k in SETS}
+            rel = {k: median([to_embree(b, k) / to_embree(a, k) for a, b in zip(default, stored)]) for k in SETS}
             self.details.append(
                 f"1M sphere, `--isa {isa}`: `--stored-normals 1` relative to the default (normals "
                 f"{'stored' if default[0].get('stored_normals') else 'formed per step'}), median of the per-round "
