@@ -307,8 +307,9 @@ void register_bench_rays_command(Command& bench) {
               "references (0 = none; default 0.3)")
       .option("--stored-normals", o.stored_normals,
               "tuning: the triangle rows store the mt kernels' normals (1) or the kernels form them per "
-              "step (0); -1 = default (stored below 262144 triangles while the BVH stays within 64 bytes a "
-              "triangle)")
+              "step (0); -1 = default (stored below " +
+                  std::to_string(kFormedNormalsFrom) + " triangles while the BVH stays within " +
+                  std::to_string(int(kBvhBytesPerTriangle)) + " bytes a triangle)")
       .option("--direct-leaf", o.direct_leaf,
               "tuning: closest-hit traversal calls the mt leaf kernel directly (1) or through the "
               "kernel table (0); -1 = default (directly on AVX2 and AVX-512)");
