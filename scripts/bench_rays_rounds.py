@@ -20,14 +20,14 @@ import statistics
 import subprocess
 import sys
 
-SETS = ("primary", "primary_packet", "shadow", "incoherent")
+SETS = ("primary", "primary_packet", "shadow", "shadow_packet", "incoherent")
 
 
 def ratios(binary, mesh, options):
     out = subprocess.run([binary, "bench", "rays", mesh, "--vs-embree", "--json", "--threads", "1",
                           "--builds", "1"] + options, check=True, capture_output=True, text=True).stdout
     d = json.loads(out)
-    return {k: d[k]["mrays_per_s"] / d["embree"][k]["mrays_per_s"] for k in SETS}
+    return {k: d[k]["mrays_per_s"] / d["embree"][k]["mrays_per_s"] for k in SETS if k in d}
 
 
 def main():
@@ -50,6 +50,8 @@ def main():
     for name, _, _ in variants:
         cells = []
         for k in SETS:
+            if any(k not in r for rs in results.values() for r in rs):
+                continue  # a set some binary does not have
             ratio = statistics.median(r[k] for r in results[name])
             rel = statistics.median(r[k] / b[k] for r, b in zip(results[name], base))
             cells.append(f"{k} {ratio:.3f} rel {rel:.3f}")

@@ -19,7 +19,7 @@ import statistics
 import subprocess
 
 SETS = [("primary", "rtcIntersect1"), ("primary_packet", "rtcIntersect16"),
-        ("shadow", "rtcOccluded1"), ("incoherent", "rtcIntersect1")]
+        ("shadow", "rtcOccluded1"), ("shadow_packet", "rtcOccluded16"), ("incoherent", "rtcIntersect1")]
 
 
 def run(binary, mesh, threads, size, isa, builds):

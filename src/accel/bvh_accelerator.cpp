@@ -60,14 +60,21 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
                                   binary.order.size(), mesh.size()));
 }
 
-bool packet_coherent(const Ray* rays, std::size_t n) {
-  const Vec3f o = rays[0].org, d0 = rays[0].dir;
-  const float len0 = length(d0);
-  for (std::size_t k = 1; k < n; ++k) {
+bool packet_aligned(const Ray* rays, std::size_t n) {
+  const Vec3f d0 = rays[0].dir;
+  const float c2 = kPacketCone * kPacketCone * dot(d0, d0);
+  for (std::size_t k = 1; k < n; ++k) {  // cos >= kPacketCone, squared: no square roots
     const Vec3f d = rays[k].dir;
-    if (!(rays[k].org == o) || !(dot(d, d0) >= kPacketCone * len0 * length(d))) return false;
+    const float c = dot(d, d0);
+    if (!(c > 0 && c * c >= c2 * dot(d, d))) return false;
   }
   return true;
+}
+
+bool packet_coherent(const Ray* rays, std::size_t n) {
+  for (std::size_t k = 1; k < n; ++k)
+    if (!(rays[k].org == rays[0].org)) return false;
+  return packet_aligned(rays, n);
 }
 
 Hit BvhAccelerator::closest(const Ray& ray) const {
@@ -101,6 +108,22 @@ void BvhAccelerator::closest_group(const Ray* rays, Hit* hits, std::size_t n) co
 
 bool BvhAccelerator::occluded(const Ray& ray, const HitFilter* filter) const {
   return traceable(ray) && traversal_->occluded(tree_.arrays(), tris_.arrays(), *kernels_, ray, filter);
+}
+
+void BvhAccelerator::occluded_stream(const Ray* rays, uint8_t* occluded, std::size_t n,
+                                     const HitFilter* filters) const {
+  const std::size_t w = traversal_->occluded_packet ? std::size_t(traversal_->packet_width) : 1;
+  for (std::size_t i = 0; i < n; i += w) {
+    const std::size_t count = std::min(n - i, w);
+    if (count > 1 && packet_aligned(rays + i, count)) {
+      const unsigned hit = traversal_->occluded_packet(tree_.arrays(), tris_.arrays(), *kernels_, rays + i,
+                                                       (1u << count) - 1u, filters ? filters + i : nullptr);
+      for (std::size_t k = 0; k < count; ++k) occluded[i + k] = uint8_t((hit >> k) & 1u);
+    } else {
+      for (std::size_t k = i; k < i + count; ++k)
+        occluded[k] = this->occluded(rays[k], filters ? &filters[k] : nullptr);
+    }
+  }
 }
 
 Hit BvhAccelerator::closest_counted(const Ray& ray, TraversalCost& cost) const {

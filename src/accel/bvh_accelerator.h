@@ -51,8 +51,10 @@ Normals bvh_normals(Intersector intersector, int stored_normals, std::size_t tre
 // cos of the widest angle between a packet's first direction and another for closest_group to
 // trace the group as a packet (about 8 degrees).
 inline constexpr float kPacketCone = 0.99f;
-// Whether rays[0, n) (n >= 1) share their origin and point within kPacketCone of rays[0]'s
-// direction; false when a NaN is involved.
+// Whether rays[0, n) (n >= 1) point within kPacketCone of rays[0]'s direction, whatever their
+// origins; false when a NaN is involved.
+bool packet_aligned(const Ray* rays, std::size_t n);
+// packet_aligned, and every ray has rays[0]'s origin.
 bool packet_coherent(const Ray* rays, std::size_t n);
 
 class BvhAccelerator final : public Accelerator {
@@ -72,8 +74,12 @@ class BvhAccelerator final : public Accelerator {
   // other groups, where diverging lanes make a packet slower than its rays one by one
   // (benchmarks.md#decision-batched-tracing).
   void closest_group(const Ray* rays, Hit* hits, std::size_t n) const override;
-  // Any-hit queries keep the inherited occluded_stream (single-ray traversals, each stopping at its
-  // first hit): there is no any-hit packet traversal.
+  // Packets for the groups of packet_width rays whose directions lie within kPacketCone of the
+  // first ray's, whatever their origins (shadow rays of a camera tile toward a light, segments from
+  // one origin); single rays for the other groups. Results equal occluded() ray by ray
+  // (benchmarks.md#decision-any-hit-packets).
+  void occluded_stream(const Ray* rays, uint8_t* occluded, std::size_t n,
+                       const HitFilter* filters = nullptr) const override;
   std::size_t bytes() const override { return tris_.bytes() + tree_.bytes(); }
   const TraceConfig& config() const override { return config_; }
 

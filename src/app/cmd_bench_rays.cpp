@@ -1,6 +1,6 @@
 // `rayvec bench rays MODEL.obj`: BVH build time, bytes per triangle, and Mrays/s of primary (single
-// rays and 4×4 packets), shadow (any-hit) and incoherent rays, optionally against Embree 3 in the
-// same run. The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
+// rays and 4×4 packets), shadow (any-hit, single rays and packets) and incoherent rays, optionally against
+// Embree 3 in the same run. The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
 #include <omp.h>
 
 #include <chrono>
@@ -73,6 +73,7 @@ void print_sets_json(const TracerRun& r) {
   print_set_json("primary", r.primary, true);
   print_set_json("primary_packet", r.primary_packet, true);
   print_set_json("shadow", r.shadow, true);
+  print_set_json("shadow_packet", r.shadow_packet, true);
   print_set_json("incoherent", r.incoherent, false);
 }
 
@@ -224,9 +225,10 @@ int run(const Options& o) {
       print_sets_json(rival_run);
       std::printf(
           ",\"mismatches\":{\"primary\":%llu,\"primary_packet\":%llu,\"shadow\":%llu,"
-          "\"incoherent\":%llu}}",
+          "\"shadow_packet\":%llu,\"incoherent\":%llu}}",
           (unsigned long long)mismatches.primary, (unsigned long long)mismatches.primary_packet,
-          (unsigned long long)mismatches.shadow, (unsigned long long)mismatches.incoherent);
+          (unsigned long long)mismatches.shadow, (unsigned long long)mismatches.shadow_packet,
+          (unsigned long long)mismatches.incoherent);
     }
     std::printf("}\n");
     return 0;
@@ -265,11 +267,14 @@ int run(const Options& o) {
   print_row("primary_packet", run.primary_packet, e ? &rival_run.primary_packet : nullptr,
             mismatches.primary_packet);
   print_row("shadow", run.shadow, e ? &rival_run.shadow : nullptr, mismatches.shadow);
+  print_row("shadow_packet", run.shadow_packet, e ? &rival_run.shadow_packet : nullptr,
+            mismatches.shadow_packet);
   print_row("incoherent", run.incoherent, e ? &rival_run.incoherent : nullptr, mismatches.incoherent);
   if (e)
     std::printf(
         "ratio = rayvec Mrays/s / embree Mrays/s (rtcIntersect1, rtcIntersect16 per 4x4 "
-        "tile, rtcOccluded1, rtcIntersect1); mismatches = rays whose triangle id (shadow: "
+        "tile, rtcOccluded1, rtcOccluded16 per tile, rtcIntersect1); mismatches = rays whose triangle id "
+        "(shadow: "
         "occlusion) differs\n");
   return 0;
 }
@@ -317,7 +322,8 @@ void register_bench_rays_command(Command& bench) {
   cmd.footer(
       "Ray sets (exact definitions in src/bench/ray_sets.h): primary = a pinhole camera framing the\n"
       "mesh (single rays, and 4x4 tiles through Accelerator::closest_stream); shadow = any-hit from\n"
-      "each primary hit toward a light above the eye; incoherent = closest hit from each primary\n"
+      "each primary hit toward a light above the eye (single rays, and the rays of each 4x4 tile's\n"
+      "hits through Accelerator::occluded_stream); incoherent = closest hit from each primary\n"
       "hit in a random direction on the normal's hemisphere. checksum = sum over hits of\n"
       "(pixel+1)*(triangle id+1) mod 2^64 (shadow: sum of pixel+1 over occluded rays).\n"
       "Example: rayvec bench rays bumpy_sphere.obj --size 512x512 --threads 1 --vs-embree");

@@ -18,6 +18,9 @@ class AcceleratorTracer final : public RayTracer {
   void occluded(const Ray* rays, uint8_t* out, std::size_t n) const override {
     for (std::size_t i = 0; i < n; ++i) out[i] = accel_.occluded(rays[i]) ? 1 : 0;
   }
+  void occluded_packet(const Ray* rays, uint8_t* out, std::size_t n) const override {
+    accel_.occluded_stream(rays, out, n);
+  }
 
  private:
   const Accelerator& accel_;

@@ -3,8 +3,9 @@
 // Scene: one RTC_GEOMETRY_TYPE_TRIANGLE with the mesh's shared vertices, RTC_BUILD_QUALITY_HIGH
 // (Embree's SAH builder with spatial splits), a device with `threads` build threads whose ISA is
 // capped at rayvec's (config max_isa), so `--isa avx2` compares against Embree's AVX2 code. Queries:
-// rtcIntersect1 per ray, rtcIntersect16 per 4×4 tile, rtcOccluded1 per shadow ray, each with a
-// fresh RTCIntersectContext (coherent flag for the packets), from rayvec's own OpenMP threads.
+// rtcIntersect1 per ray, rtcIntersect16 per 4×4 tile, rtcOccluded1 per shadow ray, rtcOccluded16 per
+// tile of shadow rays, each with a fresh RTCIntersectContext (coherent flag for the packets), from rayvec's
+// own OpenMP threads.
 #include <embree3/rtcore.h>
 
 #include <chrono>
@@ -69,26 +70,31 @@ class EmbreeScene {
     }
   }
 
-  void closest_packet(const Ray* rays, Hit* hits, std::size_t n) const {
-    alignas(64) RTCRayHit16 p;
-    alignas(64) int valid[16];
+  // The first n of 16 lanes from rays[0..n), the others invalid (a copy of ray 0).
+  static void fill_packet(const Ray* rays, std::size_t n, RTCRay16& p, int* valid) {
     for (std::size_t k = 0; k < 16; ++k) {
       const Ray& r = rays[k < n ? k : 0];
       valid[k] = k < n ? -1 : 0;
-      p.ray.org_x[k] = r.org.x;
-      p.ray.org_y[k] = r.org.y;
-      p.ray.org_z[k] = r.org.z;
-      p.ray.dir_x[k] = r.dir.x;
-      p.ray.dir_y[k] = r.dir.y;
-      p.ray.dir_z[k] = r.dir.z;
-      p.ray.tnear[k] = r.tmin;
-      p.ray.tfar[k] = r.tmax;
-      p.ray.time[k] = 0.0f;
-      p.ray.mask[k] = 0xffffffffu;
-      p.ray.id[k] = unsigned(k);
-      p.ray.flags[k] = 0;
-      p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+      p.org_x[k] = r.org.x;
+      p.org_y[k] = r.org.y;
+      p.org_z[k] = r.org.z;
+      p.dir_x[k] = r.dir.x;
+      p.dir_y[k] = r.dir.y;
+      p.dir_z[k] = r.dir.z;
+      p.tnear[k] = r.tmin;
+      p.tfar[k] = r.tmax;
+      p.time[k] = 0.0f;
+      p.mask[k] = 0xffffffffu;
+      p.id[k] = unsigned(k);
+      p.flags[k] = 0;
     }
+  }
+
+  void closest_packet(const Ray* rays, Hit* hits, std::size_t n) const {
+    alignas(64) RTCRayHit16 p;
+    alignas(64) int valid[16];
+    fill_packet(rays, n, p.ray, valid);
+    for (std::size_t k = 0; k < 16; ++k) p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -109,6 +115,17 @@ class EmbreeScene {
       rtcOccluded1(scene_, &ctx, &ray);
       out[i] = ray.tfar < 0.0f ? 1 : 0;  // Embree sets tfar = -inf on a hit
     }
+  }
+
+  void occluded_packet(const Ray* rays, uint8_t* out, std::size_t n) const {
+    alignas(64) RTCRay16 p;
+    alignas(64) int valid[16];
+    fill_packet(rays, n, p, valid);
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcOccluded16(valid, scene_, &ctx, &p);
+    for (std::size_t k = 0; k < n; ++k) out[k] = p.tfar[k] < 0.0f ? 1 : 0;
   }
 
  private:
@@ -157,6 +174,12 @@ __attribute__((visibility("default"))) void rayvec_embree_packet(void* scene, co
 __attribute__((visibility("default"))) void rayvec_embree_occluded(void* scene, const rayvec::Ray* rays,
                                                                    uint8_t* out, std::size_t n) {
   rayvec::scene_of(scene).occluded(rays, out, n);
+}
+
+__attribute__((visibility("default"))) void rayvec_embree_occluded_packet(void* scene,
+                                                                          const rayvec::Ray* rays,
+                                                                          uint8_t* out, std::size_t n) {
+  rayvec::scene_of(scene).occluded_packet(rays, out, n);
 }
 
 __attribute__((visibility("default"))) void rayvec_embree_release(void* scene) {

@@ -13,7 +13,7 @@
 extern "C" {
 
 // Bumped whenever a signature below changes; the loader refuses a module of another version.
-constexpr int kRayvecEmbreeAbi = 1;
+constexpr int kRayvecEmbreeAbi = 2;
 
 using RayvecEmbreeAbiFn = int (*)();
 // A scene over `vertex_count` vertices (x, y, z) and `triangle_count` vertex-index triples, built with
@@ -31,6 +31,9 @@ using RayvecEmbreeClosestFn = void (*)(void* scene, const rayvec::Ray* rays, ray
 using RayvecEmbreePacketFn = void (*)(void* scene, const rayvec::Ray* rays, rayvec::Hit* hits, std::size_t n);
 // rtcOccluded1 for each of n rays: out[i] = 1 when ray i is blocked.
 using RayvecEmbreeOccludedFn = void (*)(void* scene, const rayvec::Ray* rays, uint8_t* out, std::size_t n);
+// rtcOccluded16 on one coherent packet of n <= 16 rays: out[k] = 1 when ray k is blocked.
+using RayvecEmbreeOccludedPacketFn = void (*)(void* scene, const rayvec::Ray* rays, uint8_t* out,
+                                              std::size_t n);
 using RayvecEmbreeReleaseFn = void (*)(void* scene);
 }
 

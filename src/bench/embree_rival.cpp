@@ -20,6 +20,7 @@ struct Module {
   RayvecEmbreeClosestFn closest = nullptr;
   RayvecEmbreePacketFn packet = nullptr;
   RayvecEmbreeOccludedFn occluded = nullptr;
+  RayvecEmbreeOccludedPacketFn occluded_packet = nullptr;
   RayvecEmbreeReleaseFn release = nullptr;
   std::string error;  // why it could not be loaded
 };
@@ -36,8 +37,11 @@ Module load() {
   m.closest = reinterpret_cast<RayvecEmbreeClosestFn>(plugin_symbol(p, "rayvec_embree_closest"));
   m.packet = reinterpret_cast<RayvecEmbreePacketFn>(plugin_symbol(p, "rayvec_embree_packet"));
   m.occluded = reinterpret_cast<RayvecEmbreeOccludedFn>(plugin_symbol(p, "rayvec_embree_occluded"));
+  m.occluded_packet =
+      reinterpret_cast<RayvecEmbreeOccludedPacketFn>(plugin_symbol(p, "rayvec_embree_occluded_packet"));
   m.release = reinterpret_cast<RayvecEmbreeReleaseFn>(plugin_symbol(p, "rayvec_embree_release"));
-  if (!abi || abi() != kRayvecEmbreeAbi || !m.build || !m.closest || !m.packet || !m.occluded || !m.release) {
+  if (!abi || abi() != kRayvecEmbreeAbi || !m.build || !m.closest || !m.packet || !m.occluded ||
+      !m.occluded_packet || !m.release) {
     m.error = p.path + " is not a rayvec " + RAYVEC_VERSION + " Embree module (rebuild rayvec)";
     m.build = nullptr;
   }
@@ -66,6 +70,9 @@ class EmbreeTracer final : public RayTracer {
   }
   void occluded(const Ray* rays, uint8_t* out, std::size_t n) const override {
     m_.occluded(scene_, rays, out, n);
+  }
+  void occluded_packet(const Ray* rays, uint8_t* out, std::size_t n) const override {
+    m_.occluded_packet(scene_, rays, out, n);
   }
 
  private:

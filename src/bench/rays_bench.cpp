@@ -65,6 +65,21 @@ void trace_tiles(const RayTracer& t, const BenchRays& b, std::vector<Hit>& hits)
   }
 }
 
+void trace_shadow_tiles(const RayTracer& t, const BenchRays& b, std::vector<uint8_t>& out) {
+  const auto tiles = static_cast<int64_t>(b.shadow_tile_start.size()) - 1;
+#pragma omp parallel for schedule(dynamic, kTileChunk)
+  for (int64_t k = 0; k < tiles; ++k) {
+    const uint32_t s = b.shadow_tile_start[k], e = b.shadow_tile_start[k + 1];
+    if (e > s) t.occluded_packet(b.shadow_tiles.rays.data() + s, out.data() + s, e - s);
+  }
+}
+
+SetResult occluded_result(const RaySet& set, const std::vector<uint8_t>& occluded, double seconds) {
+  SetResult r{set.rays.size(), 0, occluded_checksum(set, occluded), seconds};
+  for (uint8_t o : occluded) r.hits += o;
+  return r;
+}
+
 SetResult summarize(const RaySet& set, const std::vector<Hit>& hits, double seconds) {
   SetResult r{set.rays.size(), 0, hit_checksum(set, hits), seconds};
   for (const Hit& h : hits) r.hits += h.hit() ? 1 : 0;
@@ -83,6 +98,16 @@ BenchRays make_bench_rays(const TriangleMesh& mesh, int width, int height, const
   std::vector<Hit> hits(b.primary.rays.size());
   trace_closest(reference, b.primary, hits);
   b.shadow = shadow_rays(b.camera, b.primary, hits);
+  // the shadow rays again, by tiles: those of each tile's hits, in the tile's order
+  std::vector<Hit> tile_hits(b.tiles.rays.size());
+  trace_closest(reference, b.tiles, tile_hits);
+  b.shadow_tiles = shadow_rays(b.camera, b.tiles, tile_hits);
+  b.shadow_tile_start.assign(1, 0);
+  for (std::size_t k = 0; k + 1 < b.tile_start.size(); ++k) {
+    uint32_t n = b.shadow_tile_start.back();
+    for (uint32_t i = b.tile_start[k]; i < b.tile_start[k + 1]; ++i) n += tile_hits[i].hit() ? 1u : 0u;
+    b.shadow_tile_start.push_back(n);
+  }
   b.incoherent = incoherent_rays(b.camera, mesh, b.primary, hits);
   return b;
 }
@@ -99,6 +124,7 @@ std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& trace
     run.packet_hits.resize(b.tiles.rays.size());
     run.incoherent_hits.resize(b.incoherent.rays.size());
     run.shadow_occluded.resize(b.shadow.rays.size());
+    run.shadow_packet_occluded.resize(b.shadow_tiles.rays.size());
   }
   stage("primary rays");
   auto s = median_seconds([&](std::size_t k) { trace_closest(*tracers[k], b.primary, runs[k].primary_hits); },
@@ -110,11 +136,13 @@ std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& trace
   stage("shadow rays");
   s = median_seconds([&](std::size_t k) { trace_occluded(*tracers[k], b.shadow, runs[k].shadow_occluded); },
                      n, repeats);
-  for (std::size_t k = 0; k < n; ++k) {
-    TracerRun& run = runs[k];
-    run.shadow = SetResult{b.shadow.rays.size(), 0, occluded_checksum(b.shadow, run.shadow_occluded), s[k]};
-    for (uint8_t o : run.shadow_occluded) run.shadow.hits += o;
-  }
+  for (std::size_t k = 0; k < n; ++k)
+    runs[k].shadow = occluded_result(b.shadow, runs[k].shadow_occluded, s[k]);
+  stage("shadow packets");
+  s = median_seconds(
+      [&](std::size_t k) { trace_shadow_tiles(*tracers[k], b, runs[k].shadow_packet_occluded); }, n, repeats);
+  for (std::size_t k = 0; k < n; ++k)
+    runs[k].shadow_packet = occluded_result(b.shadow_tiles, runs[k].shadow_packet_occluded, s[k]);
   stage("incoherent rays");
   s = median_seconds(
       [&](std::size_t k) { trace_closest(*tracers[k], b.incoherent, runs[k].incoherent_hits); }, n, repeats);
@@ -135,6 +163,8 @@ Mismatches count_mismatches(const TracerRun& a, const TracerRun& b) {
   m.incoherent = ids(a.incoherent_hits, b.incoherent_hits);
   for (std::size_t i = 0; i < a.shadow_occluded.size() && i < b.shadow_occluded.size(); ++i)
     m.shadow += a.shadow_occluded[i] != b.shadow_occluded[i];
+  for (std::size_t i = 0; i < a.shadow_packet_occluded.size() && i < b.shadow_packet_occluded.size(); ++i)
+    m.shadow_packet += a.shadow_packet_occluded[i] != b.shadow_packet_occluded[i];
   return m;
 }
 

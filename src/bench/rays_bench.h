@@ -1,4 +1,5 @@
-// The measurements of `rayvec bench rays`: the three ray sets of ray_sets.h traced by a RayTracer,
+// The measurements of `rayvec bench rays`: the three ray sets of ray_sets.h traced by a RayTracer
+// (primary and shadow rays also as packets of 4×4 tiles),
 // each timed as the median of `repeats` runs after one warm-up run (tracing and storing results
 // timed, ray generation not), OpenMP-parallel over chunks of rays or 4×4 tiles. With one thread the
 // clock is the thread's CPU time (stable on a shared machine), otherwise the wall clock. Printing lives in
@@ -30,13 +31,15 @@ struct BenchRays {
   RaySet tiles;                      // the same rays by 4×4 tiles
   std::vector<uint32_t> tile_start;  // tiles.rays[tile_start[k] .. tile_start[k+1])
   RaySet shadow, incoherent;
+  RaySet shadow_tiles;                      // the shadow rays by 4×4 tiles (of the tiles' hits)
+  std::vector<uint32_t> shadow_tile_start;  // shadow_tiles.rays[shadow_tile_start[k] .. [k+1])
 };
 BenchRays make_bench_rays(const TriangleMesh& mesh, int width, int height, const RayTracer& reference);
 
 struct TracerRun {
-  SetResult primary, primary_packet, shadow, incoherent;
-  std::vector<Hit> primary_hits, packet_hits, incoherent_hits;  // packet_hits in tile order
-  std::vector<uint8_t> shadow_occluded;
+  SetResult primary, primary_packet, shadow, shadow_packet, incoherent;
+  std::vector<Hit> primary_hits, packet_hits, incoherent_hits;   // packet_hits in tile order
+  std::vector<uint8_t> shadow_occluded, shadow_packet_occluded;  // the latter in tile order
 };
 // Traces every set with every tracer. The runs are interleaved — for each set, one warm-up per
 // tracer, then repeat r of tracer 0, repeat r of tracer 1, … — so that the tracers share the same
@@ -48,7 +51,7 @@ std::vector<TracerRun> run_bench_rays(const std::vector<const RayTracer*>& trace
 
 // Rays whose triangle id (or occlusion) differs between two runs, per set.
 struct Mismatches {
-  uint64_t primary = 0, primary_packet = 0, shadow = 0, incoherent = 0;
+  uint64_t primary = 0, primary_packet = 0, shadow = 0, shadow_packet = 0, incoherent = 0;
 };
 Mismatches count_mismatches(const TracerRun& a, const TracerRun& b);
 

@@ -21,6 +21,7 @@ constexpr Isa kThisIsa = Isa::avx2;
 #include "bvh/packet_traversal.inl"
 #include "bvh/watertight_leaf.inl"
 #include "bvh/mt_any_hit_leaf.inl"
+#include "bvh/packet_any_hit.inl"
 
 namespace {
 // The traversals' leaves by this unit's float `mt` single-ray kernels, called directly (not through
@@ -51,18 +52,21 @@ constinit const BvhTraversal k8{Isa::avx2,
                                 &bvh_closest<BoxLanes8>,
                                 &bvh_occluded<BoxLanes8>,
                                 &bvh_closest_packet<BoxLanes8, PacketLanes8>,
+                                &bvh_occluded_packet<BoxLanes8, PacketLanes8, TableLeaf>,
                                 8};
 constinit const BvhTraversal k16{Isa::avx2,
                                  16,
                                  &bvh_closest<BoxLanes16>,
                                  &bvh_occluded<BoxLanes16>,
                                  &bvh_closest_packet<BoxLanes16, PacketLanes8>,
+                                 &bvh_occluded_packet<BoxLanes16, PacketLanes8, TableLeaf>,
                                  8};
 constinit const BvhTraversal k8_direct{Isa::avx2,
                                        8,
                                        &bvh_closest<BoxLanes8, DirectMtLeaf>,
                                        &bvh_occluded<BoxLanes8, DirectMtLeaf>,
                                        &bvh_closest_packet<BoxLanes8, PacketLanes8>,
+                                       &bvh_occluded_packet<BoxLanes8, PacketLanes8, DirectMtLeaf>,
                                        8,
                                        true};
 constinit const BvhTraversal k16_direct{Isa::avx2,
@@ -70,22 +74,27 @@ constinit const BvhTraversal k16_direct{Isa::avx2,
                                         &bvh_closest<BoxLanes16, DirectMtLeaf>,
                                         &bvh_occluded<BoxLanes16, DirectMtLeaf>,
                                         &bvh_closest_packet<BoxLanes16, PacketLanes8>,
+                                        &bvh_occluded_packet<BoxLanes16, PacketLanes8, DirectMtLeaf>,
                                         8,
                                         true};
-constinit const BvhTraversal k8_watertight{Isa::avx2,
-                                           8,
-                                           &bvh_closest<BoxLanes8, WatertightLeaf<vfloat>>,
-                                           &bvh_occluded<BoxLanes8, WatertightLeaf<vfloat>>,
-                                           &bvh_closest_packet<BoxLanes8, PacketLanes8>,
-                                           8,
-                                           true};
-constinit const BvhTraversal k16_watertight{Isa::avx2,
-                                            16,
-                                            &bvh_closest<BoxLanes16, WatertightLeaf<vfloat>>,
-                                            &bvh_occluded<BoxLanes16, WatertightLeaf<vfloat>>,
-                                            &bvh_closest_packet<BoxLanes16, PacketLanes8>,
-                                            8,
-                                            true};
+constinit const BvhTraversal k8_watertight{
+    Isa::avx2,
+    8,
+    &bvh_closest<BoxLanes8, WatertightLeaf<vfloat>>,
+    &bvh_occluded<BoxLanes8, WatertightLeaf<vfloat>>,
+    &bvh_closest_packet<BoxLanes8, PacketLanes8>,
+    &bvh_occluded_packet<BoxLanes8, PacketLanes8, WatertightLeaf<vfloat>>,
+    8,
+    true};
+constinit const BvhTraversal k16_watertight{
+    Isa::avx2,
+    16,
+    &bvh_closest<BoxLanes16, WatertightLeaf<vfloat>>,
+    &bvh_occluded<BoxLanes16, WatertightLeaf<vfloat>>,
+    &bvh_closest_packet<BoxLanes16, PacketLanes8>,
+    &bvh_occluded_packet<BoxLanes16, PacketLanes8, WatertightLeaf<vfloat>>,
+    8,
+    true};
 }  // namespace
 
 const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector) {

@@ -21,6 +21,7 @@ constexpr Isa kThisIsa = Isa::avx512;
 #include "bvh/packet_traversal.inl"
 #include "bvh/watertight_leaf.inl"
 #include "bvh/mt_any_hit_leaf.inl"
+#include "bvh/packet_any_hit.inl"
 
 namespace {
 // The closest-hit traversal's leaves by this unit's float `mt` kernel, called directly (inlined:
@@ -50,18 +51,21 @@ constinit const BvhTraversal k8{Isa::avx512,
                                 &bvh_closest<BoxLanes8>,
                                 &bvh_occluded<BoxLanes8, DirectMtLeaf>,
                                 &bvh_closest_packet<BoxLanes8, PacketLanes16>,
+                                &bvh_occluded_packet<BoxLanes8, PacketLanes16, DirectMtLeaf>,
                                 16};
 constinit const BvhTraversal k16{Isa::avx512,
                                  16,
                                  &bvh_closest<BoxLanes16>,
                                  &bvh_occluded<BoxLanes16, DirectMtLeaf>,
                                  &bvh_closest_packet<BoxLanes16, PacketLanes16>,
+                                 &bvh_occluded_packet<BoxLanes16, PacketLanes16, DirectMtLeaf>,
                                  16};
 constinit const BvhTraversal k8_direct{Isa::avx512,
                                        8,
                                        &bvh_closest<BoxLanes8, DirectMtLeaf>,
                                        &bvh_occluded<BoxLanes8, DirectMtLeaf>,
                                        &bvh_closest_packet<BoxLanes8, PacketLanes16>,
+                                       &bvh_occluded_packet<BoxLanes8, PacketLanes16, DirectMtLeaf>,
                                        16,
                                        true};
 constinit const BvhTraversal k16_direct{Isa::avx512,
@@ -69,22 +73,27 @@ constinit const BvhTraversal k16_direct{Isa::avx512,
                                         &bvh_closest<BoxLanes16, DirectMtLeaf>,
                                         &bvh_occluded<BoxLanes16, DirectMtLeaf>,
                                         &bvh_closest_packet<BoxLanes16, PacketLanes16>,
+                                        &bvh_occluded_packet<BoxLanes16, PacketLanes16, DirectMtLeaf>,
                                         16,
                                         true};
-constinit const BvhTraversal k8_watertight{Isa::avx512,
-                                           8,
-                                           &bvh_closest<BoxLanes8, WatertightLeaf<vfloat>>,
-                                           &bvh_occluded<BoxLanes8, WatertightLeaf<vfloat>>,
-                                           &bvh_closest_packet<BoxLanes8, PacketLanes16>,
-                                           16,
-                                           true};
-constinit const BvhTraversal k16_watertight{Isa::avx512,
-                                            16,
-                                            &bvh_closest<BoxLanes16, WatertightLeaf<vfloat>>,
-                                            &bvh_occluded<BoxLanes16, WatertightLeaf<vfloat>>,
-                                            &bvh_closest_packet<BoxLanes16, PacketLanes16>,
-                                            16,
-                                            true};
+constinit const BvhTraversal k8_watertight{
+    Isa::avx512,
+    8,
+    &bvh_closest<BoxLanes8, WatertightLeaf<vfloat>>,
+    &bvh_occluded<BoxLanes8, WatertightLeaf<vfloat>>,
+    &bvh_closest_packet<BoxLanes8, PacketLanes16>,
+    &bvh_occluded_packet<BoxLanes8, PacketLanes16, WatertightLeaf<vfloat>>,
+    16,
+    true};
+constinit const BvhTraversal k16_watertight{
+    Isa::avx512,
+    16,
+    &bvh_closest<BoxLanes16, WatertightLeaf<vfloat>>,
+    &bvh_occluded<BoxLanes16, WatertightLeaf<vfloat>>,
+    &bvh_closest_packet<BoxLanes16, PacketLanes16>,
+    &bvh_occluded_packet<BoxLanes16, PacketLanes16, WatertightLeaf<vfloat>>,
+    16,
+    true};
 }  // namespace
 
 const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector) {

@@ -11,9 +11,9 @@ namespace rayvec::scalar {
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhTraversal k4{Isa::scalar, 4, &bvh_closest<BoxLanes4>, &bvh_occluded<BoxLanes4>,
+constinit const BvhTraversal k4{Isa::scalar, 4, &bvh_closest<BoxLanes4>, &bvh_occluded<BoxLanes4>, nullptr,
                                 nullptr,     0};
-constinit const BvhTraversal k8{Isa::scalar, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>,
+constinit const BvhTraversal k8{Isa::scalar, 8, &bvh_closest<BoxLanes8>, &bvh_occluded<BoxLanes8>, nullptr,
                                 nullptr,     0};
 }  // namespace
 

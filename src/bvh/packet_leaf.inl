@@ -174,3 +174,68 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   // u and v divided once, as mt_finish does (0 − un: no −0)
   return packet_leaf_finish<V>(T, found, best_t, (zero - un) / adet, vn / adet, slot, limit, initial, hits);
 }
+
+// The lanes of `hit` (lanes that hit slot i) whose filter accepts the slot's triangle: every one of
+// them when `filters` is null, else lane k asks filters[k], as the single-ray any-hit kernels ask
+// theirs of each triangle they hit.
+RAYVEC_INLINE unsigned packet_filter_accepts(const TriangleArrays& T, uint32_t i, unsigned hit,
+                                             const HitFilter* filters) {
+  if (!filters) return hit;
+  const int32_t id = T.id[slot_offset(i)];
+  for (unsigned m = hit; m != 0; m &= m - 1) {
+    const int k = __builtin_ctz(m);
+    if (filters[k].ignore(filters[k].context, id)) hit &= ~(1u << k);
+  }
+  return hit;
+}
+
+// The packet's rays for the any-hit leaf, and per lane the single-ray any-hit kernel's constants
+// (mt_any_hit_ray): lo = mt_lower(tmin), hi = next_up(tmax)·(1 + 2^-20), tlimit = next_up(tmax).
+template <class V>
+struct MtPacketAnyRays {
+  RayLanes<V> r;
+  V lo, hi, tlimit;
+};
+
+// Slots [begin, end) against the lanes set in `lanes`: the lanes that hit one of them with
+// tmin <= t <= tmax and whose filter (filters: null or one per lane) accepts it. Per lane and
+// triangle exactly mt_any_hit_step's tests (the same numerators as mt_packet_closest's, the same
+// ordered depth bounds, the same exact t) behind the conservative sign pre-test, so a lane is
+// occluded here exactly when the single-ray kernel finds its ray occluded in the same range (outside
+// subnormal |det|, mt_packet_closest's caveat). A lane leaves the loop at its first hit.
+template <class V>
+unsigned mt_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                            const MtPacketAnyRays<V>& q, unsigned lanes, const HitFilter* filters) {
+  const V neg_lo = V::broadcast(0.0f) - q.lo;
+  unsigned found = 0;
+  // the exact tests of one triangle that passed the pre-test
+  auto step = [&](const MtNumerators<V>& c, uint32_t i) __attribute__((always_inline)) {
+    const typename V::Mask m =
+        mask_from_bits(V{}, lanes) & mt_edges(c) & (c.tn < q.hi * c.adet) & (c.tn >= q.lo * c.adet);
+    if (!any(m)) return;
+    const V t = c.tn / c.adet;
+    const unsigned hit = packet_filter_accepts(T, i, bits(m & (t >= q.r.tmin) & (t < q.tlimit)), filters);
+    found |= hit;
+    lanes &= ~hit;
+  };
+  MtLeafEdges edges;
+  mt_leaf_edges<V>(T, begin, end, edges);
+  // Two triangles per iteration, one branch on both sign pre-tests (conservative: every lane the
+  // exact tests accept passes them; mt_sign_pretest), as mt_packet_closest does.
+  uint32_t i = begin;
+  for (; i + 1 < end && lanes != 0; i += 2) {
+    const typename V::Mask active = mask_from_bits(V{}, lanes);
+    const MtNumerators<V> c0 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
+    const MtNumerators<V> c1 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i + 1), q.r);
+    const unsigned p0 = bits(mt_sign_pretest<V, false>(c0, active, neg_lo, q.hi));
+    const unsigned p1 = bits(mt_sign_pretest<V, false>(c1, active, neg_lo, q.hi));
+    if ((p0 | p1) == 0) continue;
+    if (p0) step(c0, i);
+    if (p1) step(c1, i + 1);
+  }
+  if (i < end && lanes != 0) {
+    const MtNumerators<V> c = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
+    if (any(mt_sign_pretest<V, false>(c, mask_from_bits(V{}, lanes), neg_lo, q.hi))) step(c, i);
+  }
+  return found;
+}

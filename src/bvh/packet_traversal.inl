@@ -224,6 +224,83 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
   }
 }
 
+// A packet's rays as SoA rows: o (0..2), d (3..5), tmin (6), tmax (7); and 1/d.
+struct PacketRows {
+  alignas(64) float soa[8][vfloat::W];
+  alignas(64) float rd[3][vfloat::W];
+};
+
+// Transposes rays[0..P) of the lanes `active` (the other rays not read) into `s` and forms 1/d.
+// Returns the lanes left to trace: traceable rays (finite origin and direction, no NaN tmin or
+// tmax, as bvh.cpp's single rays) that enter the root's box.
+template <class PK>
+RAYVEC_INLINE unsigned load_packet(const BvhArrays& bvh, const Ray* rays, unsigned active, PacketRows& s) {
+  static_assert(sizeof(Ray) == 8 * sizeof(float), "PK::load_rays reads a Ray as 8 floats");
+  active = PK::load_rays(reinterpret_cast<const float*>(rays), active, s.soa);
+  if (active == 0) return 0;
+  const vfloat one = vfloat::broadcast(1.0f);
+  for (int a = 0; a < 3; ++a)  // ±0 gives ±inf with the sign of the zero, as 1.0f / d does
+    (one / vfloat::load(s.soa[3 + a])).store(s.rd[a]);
+  // Camera packets often miss the whole mesh (the background): the root's box (the union of its
+  // children's, kept by WideBvh) first, one test instead of N, dropping the lanes that miss it.
+  const vfloat o[3] = {vfloat::load(s.soa[0]), vfloat::load(s.soa[1]), vfloat::load(s.soa[2])};
+  const vfloat r[3] = {vfloat::load(s.rd[0]), vfloat::load(s.rd[1]), vfloat::load(s.rd[2])};
+  return packet_box_lanes(bvh.root_lo, bvh.root_hi, o, r, vfloat::load(s.soa[6]), vfloat::load(s.soa[7]),
+                          bvh.box_epsilon, active);
+}
+
+// Calls traverse(boxes, children) with the box test the packet's lanes `active` allow.
+//
+// The forward test (PK::Forward) when every lane has tmin >= 0 and no slab product can overflow:
+// |1/d| · max(|o|, |root box|) <= 2^120 on every axis of every lane (so also no infinite 1/d of a
+// zero direction component, whose 0·inf the FMA form could not skip), and eps >= 2^-20.
+//
+// Why it never drops a box the general test keeps (u = 2^-24): r = fl(1/d) = (1/d)(1 + δ0) and
+// r' = fl(r·(1 − eps)) = r(1 − eps)(1 + δ1); k >= o·r' exactly (PK::Forward::outward moves the
+// rounded product up by more than its error). The FMA rounds once: t' = fl(b·r' − k) with
+// b·r' − k <= (b − o)·r'. If the exact entry (b − o)/d > 0, t' <= (b − o)/d · (1 − eps)(1 + u)^3,
+// below it by more than 0.9·eps·|t| as in the general and single-ray tests; if it is <= 0, so
+// is t', and tmin >= 0 decides in both. The exit mirrors this with r·(1 + eps) and k rounded
+// down: above the exact exit by more than 0.9·eps·|t| when it is > 0; an exact exit < 0 misses
+// in both (tmin >= 0), and an exit of exactly 0 gives t' >= 0. Without the outward rounding the
+// error of o·r' (u·|o·r'|, not relative to t) loses boxes far from the coordinate origin
+// (tests/bvh/bvh_packet_box_test.cpp). The gain: benchmarks.md#decision-packet-setup. Packets whose
+// lanes share the direction signs (uniform) also get the hull pre-test (PacketChildren).
+template <class B, class PK, class Traverse>
+RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, unsigned active,
+                                     const Traverse& traverse) {
+  const float* const rows[8] = {s.soa[0], s.soa[1], s.soa[2], s.rd[0], s.rd[1], s.rd[2], s.soa[6], s.soa[7]};
+  const vfloat zero = vfloat::broadcast(0.0f);
+  const vfloat big = vfloat::broadcast(0x1p120f);
+  vfloat m =
+      vmax(vmax(abs(vfloat::load(s.soa[0])), abs(vfloat::load(s.soa[1]))), abs(vfloat::load(s.soa[2])));
+  for (int a = 0; a < 3; ++a) m = vmax(m, vfloat::broadcast(vmax_abs(bvh.root_lo[a], bvh.root_hi[a])));
+  const vfloat r =
+      vmax(vmax(abs(vfloat::load(s.rd[0])), abs(vfloat::load(s.rd[1]))), abs(vfloat::load(s.rd[2])));
+  if (bvh.box_epsilon >= 0x1p-20f && (bits(vfloat::load(s.soa[6]) >= zero) & active) == active &&
+      (bits(r * m <= big) & active) == active) {
+    unsigned neg[3];  // lanes with a negative direction component; uniform: none or all
+    bool uniform = true;
+    for (int a = 0; a < 3; ++a) {
+      neg[a] = bits(vfloat::load(s.rd[a]) < zero) & active;
+      uniform = uniform && (neg[a] == 0 || neg[a] == active);
+    }
+    if (uniform) {
+      auto boxes = PK::template Forward<true>::load(rows, neg, bvh.box_epsilon);
+      PacketChildren<B, true> children{B::prepare_hull(boxes.hull(active)), boxes.max_tmax(active)};
+      traverse(boxes, children);
+    } else {
+      auto boxes = PK::template Forward<false>::load(rows, neg, bvh.box_epsilon);
+      PacketChildren<B, false> children{};
+      traverse(boxes, children);
+    }
+    return;
+  }
+  PacketBoxes<PK> boxes{PK::load(rows), bvh.box_epsilon};
+  PacketChildren<B, false> children{};
+  traverse(boxes, children);
+}
+
 // rays[0..P) with lanes `active`, the other lanes' rays not read: hits[k] of each active lane
 // becomes its closest hit (a miss for an untraceable ray: NaN or infinite origin or direction, NaN
 // tmin or tmax, as bvh.cpp's single rays).
@@ -232,7 +309,6 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const 
                         const Ray* rays, Hit* hits, unsigned active) {
   constexpr int P = PK::P;
   static_assert(vfloat::W == P, "the packet leaf kernel has one ray per vfloat lane");
-  static_assert(sizeof(Ray) == 8 * sizeof(float), "PK::load_rays reads a Ray as 8 floats");
   // Streams of packets (closest_stream, tiles of a frame) lie one after the other: start loading
   // the rays and hits of the packet three ahead now, as the time of one packet is far too short
   // for the hardware to hide the memory latency of its first loads (benchmarks.md#decision-prefetch).
@@ -249,33 +325,13 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const 
   } else {
     for (unsigned m = active; m != 0; m &= m - 1) hits[__builtin_ctz(m)] = Hit{};
   }
-  // the rays as SoA rows: o, d, tmin, tmax (= the ray's tmax: no hit yet); 1/d
-  alignas(64) float soa[8][P], rd[3][P];
-  active = PK::load_rays(reinterpret_cast<const float*>(rays), active, soa);
+  PacketRows s;  // tmax (row 7) becomes min(tmax, hit.t) per lane as hits are found
+  active = load_packet<PK>(bvh, rays, active, s);
   if (active == 0) return;
-  const vfloat zero = vfloat::broadcast(0.0f), one = vfloat::broadcast(1.0f);
-  const vfloat dx = vfloat::load(soa[3]), dy = vfloat::load(soa[4]), dz = vfloat::load(soa[5]);
-  (one / dx).store(rd[0]);  // ±0 gives ±inf with the sign of the zero, as 1.0f / d does
-  (one / dy).store(rd[1]);
-  (one / dz).store(rd[2]);
-  const vfloat tmin0 = vfloat::load(soa[6]);
+  const vfloat zero = vfloat::broadcast(0.0f);
+  const vfloat tmin0 = vfloat::load(s.soa[6]);
   const unsigned tmin_zero = bits((tmin0 >= zero) & (tmin0 <= zero));
-  const float* const rows[8] = {soa[0], soa[1], soa[2], rd[0], rd[1], rd[2], soa[6], soa[7]};
-  float* tmax = soa[7];
-
-  // Camera packets often miss the whole mesh (the background): the root's box (the union of its
-  // children's, kept by WideBvh) first, one test instead of N, dropping the lanes that miss it.
-  const float* const root_lo = bvh.root_lo;
-  const float* const root_hi = bvh.root_hi;
-  {
-    const float* const lo = root_lo;
-    const float* const hi = root_hi;
-    const vfloat o[3] = {vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2])};
-    const vfloat r[3] = {vfloat::load(rd[0]), vfloat::load(rd[1]), vfloat::load(rd[2])};
-    active =
-        packet_box_lanes(lo, hi, o, r, vfloat::load(soa[6]), vfloat::load(soa[7]), bvh.box_epsilon, active);
-    if (active == 0) return;
-  }
+  float* tmax = s.soa[7];
 
   // The leaf kernel: a packet kernel for this unit's float `mt` and `watertight` tables (the mt one
   // only when the lanes do not mix tmin = 0 with tmin != 0), else ray by ray.
@@ -293,57 +349,21 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const 
   alignas(64) float initial[P], lo[P];
   for (int k = 0; k < P; ++k) {
     initial[k] = next_up(tmax[k]);
-    lo[k] = leaf == PacketLeaf::mt ? mt_lower(soa[6][k]) : 0.0f;
+    lo[k] = leaf == PacketLeaf::mt ? mt_lower(s.soa[6][k]) : 0.0f;
   }
   const MtPacketRays<vfloat> q{
-      {vfloat::load(soa[0]), vfloat::load(soa[1]), vfloat::load(soa[2]), dx, dy, dz, vfloat::load(soa[6])},
+      {vfloat::load(s.soa[0]), vfloat::load(s.soa[1]), vfloat::load(s.soa[2]), vfloat::load(s.soa[3]),
+       vfloat::load(s.soa[4]), vfloat::load(s.soa[5]), tmin0},
       vfloat::load(lo)};
   WatertightPacketRays<vfloat> wq;  // set only for the watertight leaf
   if (leaf == PacketLeaf::watertight) {
-    const float* const o[3] = {soa[0], soa[1], soa[2]};
-    const float* const d[3] = {soa[3], soa[4], soa[5]};
-    wq = watertight_packet_rays<vfloat>(o, d, soa[6], active);
+    const float* const o[3] = {s.soa[0], s.soa[1], s.soa[2]};
+    const float* const d[3] = {s.soa[3], s.soa[4], s.soa[5]};
+    wq = watertight_packet_rays<vfloat>(o, d, s.soa[6], active);
   }
-
   const PacketRun run{tmax, initial, leaf, q, wq};
-  // The forward test (PK::Forward) when every lane has tmin >= 0 and no slab product can overflow:
-  // |1/d| · max(|o|, |root box|) <= 2^120 on every axis of every lane (so also no infinite 1/d of a
-  // zero direction component, whose 0·inf the FMA form could not skip), and eps >= 2^-20.
-  //
-  // Why it never drops a box the general test keeps (u = 2^-24): r = fl(1/d) = (1/d)(1 + δ0) and
-  // r' = fl(r·(1 − eps)) = r(1 − eps)(1 + δ1); k >= o·r' exactly (PK::Forward::outward moves the
-  // rounded product up by more than its error). The FMA rounds once: t' = fl(b·r' − k) with
-  // b·r' − k <= (b − o)·r'. If the exact entry (b − o)/d > 0, t' <= (b − o)/d · (1 − eps)(1 + u)^3,
-  // below it by more than 0.9·eps·|t| as in the general and single-ray tests; if it is <= 0, so
-  // is t', and tmin >= 0 decides in both. The exit mirrors this with r·(1 + eps) and k rounded
-  // down: above the exact exit by more than 0.9·eps·|t| when it is > 0; an exact exit < 0 misses
-  // in both (tmin >= 0), and an exit of exactly 0 gives t' >= 0. Without the outward rounding the
-  // error of o·r' (u·|o·r'|, not relative to t) loses boxes far from the coordinate origin
-  // (tests/bvh/bvh_packet_box_test.cpp). The gain: benchmarks.md#decision-packet-setup.
-  const vfloat big = vfloat::broadcast(0x1p120f);
-  vfloat m = vmax(vmax(abs(vfloat::load(soa[0])), abs(vfloat::load(soa[1]))), abs(vfloat::load(soa[2])));
-  for (int a = 0; a < 3; ++a) m = vmax(m, vfloat::broadcast(vmax_abs(root_lo[a], root_hi[a])));
-  const vfloat r = vmax(vmax(abs(vfloat::load(rd[0])), abs(vfloat::load(rd[1]))), abs(vfloat::load(rd[2])));
-  if (bvh.box_epsilon >= 0x1p-20f && (bits(tmin0 >= zero) & active) == active &&
-      (bits(r * m <= big) & active) == active) {
-    unsigned neg[3];  // lanes with a negative direction component; uniform: none or all
-    bool uniform = true;
-    for (int a = 0; a < 3; ++a) {
-      neg[a] = bits(vfloat::load(rd[a]) < zero) & active;
-      uniform = uniform && (neg[a] == 0 || neg[a] == active);
-    }
-    if (uniform) {
-      auto boxes = PK::template Forward<true>::load(rows, neg, bvh.box_epsilon);
-      PacketChildren<B, true> children{B::prepare_hull(boxes.hull(active)), boxes.max_tmax(active)};
-      bvh_packet_traverse<B, PK>(bvh, tris, kernels, rays, hits, active, boxes, children, run);
-    } else {
-      auto boxes = PK::template Forward<false>::load(rows, neg, bvh.box_epsilon);
-      PacketChildren<B, false> children{};
-      bvh_packet_traverse<B, PK>(bvh, tris, kernels, rays, hits, active, boxes, children, run);
-    }
-    return;
-  }
-  PacketBoxes<PK> boxes{PK::load(rows), bvh.box_epsilon};
-  PacketChildren<B, false> children{};
-  bvh_packet_traverse<B, PK>(bvh, tris, kernels, rays, hits, active, boxes, children, run);
+  with_packet_boxes<B, PK>(
+      bvh, s, active, [&](auto& boxes, auto& children) __attribute__((always_inline)) {
+        bvh_packet_traverse<B, PK>(bvh, tris, kernels, rays, hits, active, boxes, children, run);
+      });
 }

@@ -194,7 +194,7 @@ void bvh_closest(const BvhArrays& bvh, const TriangleArrays& tris, const Triangl
 
 template <class B, bool Forward, class Leaf>
 bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
-                       const Ray& ray, const HitFilter* filter) {
+                       const Ray& ray, const HitFilter* filter, uint32_t start) {
   constexpr int N = B::N;
   const WideNode<N>* nodes = static_cast<const WideNode<N>*>(bvh.nodes);
   const RayBoxes<B, Forward> boxes = ray_boxes<B, Forward>(ray, bvh.box_epsilon);
@@ -203,7 +203,7 @@ bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const T
                         ? local
                         : static_cast<uint32_t*>(__builtin_alloca(bvh.stack_size * sizeof(uint32_t)));
   uint32_t sp = 0;
-  uint32_t ref = 0;
+  uint32_t ref = start;
   // tmin and tmax in locals: read through `ray` they are reloaded after every leaf call
   const float tmin = ray.tmin, tmax = ray.tmax;
   const typename Leaf::AnyHit leaf(kernels, tris, ray);
@@ -225,9 +225,17 @@ bool bvh_occluded_impl(const BvhArrays& bvh, const TriangleArrays& tris, const T
   }
 }
 
+// Any hit in the subtree `start` (0 = the whole tree).
+template <class B, class Leaf = TableLeaf>
+RAYVEC_INLINE bool bvh_occluded_from(const BvhArrays& bvh, const TriangleArrays& tris,
+                                     const TriangleKernels& kernels, const Ray& ray, const HitFilter* filter,
+                                     uint32_t start) {
+  return ray.tmin >= 0.0f ? bvh_occluded_impl<B, true, Leaf>(bvh, tris, kernels, ray, filter, start)
+                          : bvh_occluded_impl<B, false, Leaf>(bvh, tris, kernels, ray, filter, start);
+}
+
 template <class B, class Leaf = TableLeaf>
 bool bvh_occluded(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                   const Ray& ray, const HitFilter* filter) {
-  return ray.tmin >= 0.0f ? bvh_occluded_impl<B, true, Leaf>(bvh, tris, kernels, ray, filter)
-                          : bvh_occluded_impl<B, false, Leaf>(bvh, tris, kernels, ray, filter);
+  return bvh_occluded_from<B, Leaf>(bvh, tris, kernels, ray, filter, 0);
 }

@@ -137,3 +137,29 @@ unsigned watertight_packet_closest(const TriangleArrays& T, uint32_t begin, uint
   if (found == 0) return 0;
   return packet_leaf_finish<V>(T, found, best_t, un, vn, slot, limit, initial, hits);
 }
+
+// Slots [begin, end) against the lanes set in `lanes`: the lanes that hit one of them with
+// tmin <= t < tlimit (per lane: next_up(tmax), watertight_any_limit) and whose filter (filters: null
+// or one per lane) accepts it — per lane and triangle the single-ray any-hit kernel's test
+// (watertight_lanes), so the same occlusion. A lane leaves the loop at its first hit.
+template <class V>
+unsigned watertight_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                    const WatertightPacketRays<V>& q, V tlimit, unsigned lanes,
+                                    const HitFilter* filters) {
+  unsigned found = 0;
+  for (int c = 0; c < 6; ++c) {
+    unsigned class_lanes = lanes & q.lanes[c];
+    if (class_lanes == 0) continue;
+    const WatertightRay<V> r = watertight_packet_class<V>(T, q, c);
+    for (uint32_t i = begin; i < end && class_lanes != 0; ++i) {
+      const LaneHits<V> h =
+          watertight_lanes<V>(r, WatertightBroadcast<V>{slot_offset(i)}, NonzeroAreaTriangle<V>{T, i},
+                              mask_from_bits(V{}, class_lanes), tlimit);
+      if (!any(h.mask)) continue;
+      const unsigned hit = packet_filter_accepts(T, i, bits(h.mask), filters);
+      found |= hit;
+      class_lanes &= ~hit;
+    }
+  }
+  return found;
+}

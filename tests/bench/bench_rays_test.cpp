@@ -49,13 +49,16 @@ TEST(BenchRays, TinyRunPrintsJsonWithEverySetAndPacketsMatchSingleRays) {
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* key : {"\"build_s\"", "\"bytes_per_tri\"", "\"isa\"", "\"threads\":2"})
     EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
-  for (const char* set : {"primary", "primary_packet", "shadow", "incoherent"})
+  for (const char* set : {"primary", "primary_packet", "shadow", "shadow_packet", "incoherent"})
     for (const char* key : {"rays", "hits", "checksum", "mrays_per_s"})
       EXPECT_NE(field(r.out, set, key), "") << set << "." << key << " in " << r.out;
   EXPECT_EQ(field(r.out, "primary", "rays"), "192");
   EXPECT_NE(field(r.out, "primary", "hits"), "0");
   EXPECT_EQ(field(r.out, "primary", "checksum"), field(r.out, "primary_packet", "checksum"));
   EXPECT_EQ(field(r.out, "shadow", "rays"), field(r.out, "primary", "hits"));
+  // the same shadow rays by tiles: the checksum (a sum over pixels) does not depend on their order
+  EXPECT_EQ(field(r.out, "shadow_packet", "rays"), field(r.out, "shadow", "rays"));
+  EXPECT_EQ(field(r.out, "shadow_packet", "checksum"), field(r.out, "shadow", "checksum"));
 }
 
 // Every run names the vector FMA rate of each width this CPU has (0 for a width it lacks), so a
@@ -130,7 +133,7 @@ TEST(BenchRays, EveryIsaGivesTheSameChecksums) {
   for (const char* isa : {"avx2", "avx512"}) {
     const auto r = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --isa " + isa);
     if (r.status != 0) continue;  // ISA not on this CPU (a usage error, tested elsewhere)
-    for (const char* set : {"primary", "primary_packet", "shadow", "incoherent"})
+    for (const char* set : {"primary", "primary_packet", "shadow", "shadow_packet", "incoherent"})
       EXPECT_EQ(field(r.out, set, "checksum"), field(ref.out, set, "checksum")) << isa << " " << set;
   }
 }
@@ -154,6 +157,7 @@ TEST(BenchRays, VsEmbreeRunsWhenBuiltWithEmbreeAndOtherwiseExitsTwo) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"embree\":{\"build_s\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"mismatches\":{\"primary\":0,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"shadow_packet\":0,"), std::string::npos) << r.out;
 }
 
 // The rival runs at rayvec's ISA (Embree's max_isa), so an AVX2 comparison is AVX2 against AVX2.
