@@ -24,19 +24,7 @@
 namespace rayvec {
 namespace {
 
-class BvhAnyHitPacket : public test::BvhCaseTest {
- protected:
-  void SetUp() override {
-    test::BvhCaseTest::SetUp();
-    if (IsSkipped()) return;
-    if (GetParam().isa == Isa::scalar) GTEST_SKIP() << "scalar has no packets: skipped";
-  }
-  BvhAccelerator bvh(const TriangleMesh& mesh) const {
-    BvhOptions options;
-    options.width = GetParam().width;
-    return BvhAccelerator(mesh, config(), options);
-  }
-};
+using BvhAnyHitPacket = test::BvhPacketCaseTest;
 
 // Every group of P rays as one packet (the traversal's occluded_packet, coherent or not), and the
 // whole list through occluded_stream, against occluded() ray by ray. Returns the occluded count.
@@ -64,27 +52,11 @@ int expect_same_occlusion(const BvhAccelerator& a, const std::vector<Ray>& rays,
   return occluded;
 }
 
-// Packets of P lanes holding P/4 consecutive rays four times each, so that four lanes or more reach
-// every leaf a ray visits (no packet diverges into single rays).
-std::vector<Ray> four_copies(const std::vector<Ray>& rays, int P) {
-  const std::size_t distinct = std::size_t(P / 4);
-  std::vector<Ray> out;
-  for (std::size_t i = 0; i < rays.size(); i += distinct)
-    for (int k = 0; k < P; ++k) out.push_back(rays[std::min(i + std::size_t(k) % distinct, rays.size() - 1)]);
-  return out;
-}
-
 TEST_P(BvhAnyHitPacket, HardCaseFamiliesMatchSingleRaysAtTheClosedEnd) {
   int families = 0, at_hit = 0;
   for (const HardCaseFamily& f : hard_case_families(5, 1)) {
-    std::unique_ptr<BvhAccelerator> accel;
-    BvhOptions options;
-    options.width = GetParam().width;
-    try {
-      accel = std::make_unique<BvhAccelerator>(f.mesh, config(), options);
-    } catch (const std::exception&) {
-      continue;  // a family the BVH refuses (non-finite vertices)
-    }
+    const std::unique_ptr<BvhAccelerator> accel = bvh_unless_refused(f.mesh);
+    if (!accel) continue;
     // each ray, then with tmax at its nearest hit (occluded: t <= tmax) and just before it
     std::vector<Ray> rays;
     for (const Ray& r : f.rays) {
@@ -99,7 +71,7 @@ TEST_P(BvhAnyHitPacket, HardCaseFamiliesMatchSingleRaysAtTheClosedEnd) {
       at_hit += accel->occluded(at);
     }
     expect_same_occlusion(*accel, rays, nullptr, f.name);
-    expect_same_occlusion(*accel, four_copies(rays, accel->traversal().packet_width), nullptr,
+    expect_same_occlusion(*accel, test::four_copies(rays, accel->traversal().packet_width), nullptr,
                           f.name + " (four copies)");
     ++families;
   }
@@ -113,7 +85,7 @@ TEST_P(BvhAnyHitPacket, RandomRaysAndShadowTilesMatchSingleRays) {
   const int P = a.traversal().packet_width;
   const std::vector<Ray> rays = test::random_rays(1200, 1.5f, 42);
   EXPECT_GT(expect_same_occlusion(a, rays, nullptr, "random"), 100);
-  EXPECT_GT(expect_same_occlusion(a, four_copies(rays, P), nullptr, "random, four copies"), 400);
+  EXPECT_GT(expect_same_occlusion(a, test::four_copies(rays, P), nullptr, "random, four copies"), 400);
   // shadow rays: from the hits of camera tiles toward a point light, as the renderer forms them
   const Vec3f light{0.4f, 2.5f, 1.8f};
   std::vector<Ray> shadow;

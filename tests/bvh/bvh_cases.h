@@ -2,12 +2,15 @@
 // a readable gtest name (`avx512_mt_w8`). ISAs the CPU lacks stay in the list, so each test's SetUp
 // can report them as skipped by name instead of passing silently.
 #pragma once
+#include <exception>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "accel/accelerator.h"
+#include "accel/bvh_accelerator.h"
 #include "bvh/bvh_traversal.h"
 #include "kernels/intersector.h"
 #include "platform/isa.h"
@@ -38,6 +41,30 @@ class BvhCaseTest : public ::testing::TestWithParam<BvhCase> {
       GTEST_SKIP() << "CPU lacks " << isa_name(GetParam().isa) << ": skipped";
   }
   TraceConfig config() const { return {GetParam().isa, GetParam().intersector}; }
+};
+
+// Fixture of the packet tests: skips the scalar ISA (no packets) by name; bvh(mesh) builds the
+// case's BVH at its node width.
+class BvhPacketCaseTest : public BvhCaseTest {
+ protected:
+  void SetUp() override {
+    BvhCaseTest::SetUp();
+    if (IsSkipped()) return;
+    if (GetParam().isa == Isa::scalar) GTEST_SKIP() << "scalar has no packets: skipped";
+  }
+  BvhAccelerator bvh(const TriangleMesh& mesh) const {
+    BvhOptions options;
+    options.width = GetParam().width;
+    return BvhAccelerator(mesh, config(), options);
+  }
+  // bvh(mesh), or null for a mesh the BVH refuses (a hard-case family with non-finite vertices).
+  std::unique_ptr<BvhAccelerator> bvh_unless_refused(const TriangleMesh& mesh) const {
+    try {
+      return std::make_unique<BvhAccelerator>(bvh(mesh));
+    } catch (const std::exception&) {
+      return nullptr;
+    }
+  }
 };
 
 inline std::string bvh_case_name(const ::testing::TestParamInfo<BvhCase>& info) {

@@ -102,4 +102,15 @@ inline std::vector<Ray> random_rays(int n, float s, unsigned seed) {
   return rays;
 }
 
+// Packets of P lanes holding P/4 consecutive rays four times each (lane k: ray P/4·p + k mod P/4).
+// Copies follow each other through the tree, so at least four lanes reach every leaf a ray visits
+// and no packet diverges into single rays (kSingleRayLanes): every leaf runs the packet kernel.
+inline std::vector<Ray> four_copies(const std::vector<Ray>& rays, int P) {
+  const std::size_t distinct = std::size_t(P / 4);
+  std::vector<Ray> out;
+  for (std::size_t i = 0; i < rays.size(); i += distinct)
+    for (int k = 0; k < P; ++k) out.push_back(rays[std::min(i + std::size_t(k) % distinct, rays.size() - 1)]);
+  return out;
+}
+
 }  // namespace rayvec::test

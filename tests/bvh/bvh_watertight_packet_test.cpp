@@ -23,19 +23,7 @@
 namespace rayvec {
 namespace {
 
-class BvhWatertightPacket : public test::BvhCaseTest {
- protected:
-  void SetUp() override {
-    test::BvhCaseTest::SetUp();
-    if (IsSkipped()) return;
-    if (GetParam().isa == Isa::scalar) GTEST_SKIP() << "scalar has no packets: skipped";
-  }
-  BvhAccelerator bvh(const TriangleMesh& mesh) const {
-    BvhOptions options;
-    options.width = GetParam().width;
-    return BvhAccelerator(mesh, config(), options);
-  }
-};
+using BvhWatertightPacket = test::BvhPacketCaseTest;
 
 // closest_stream over `rays` against closest() ray by ray, bit for bit; returns the hits.
 int expect_lanes_exact(const BvhAccelerator& bvh, const std::vector<Ray>& rays, const std::string& what) {
@@ -56,17 +44,6 @@ int expect_lanes_exact(const BvhAccelerator& bvh, const std::vector<Ray>& rays, 
   return hits;
 }
 
-// Packets of P lanes holding P/4 consecutive rays four times each (lane k: ray P/4·p + k mod P/4).
-// Copies follow each other through the tree, so at least four lanes reach every leaf a ray visits
-// and no packet diverges into single rays (kSingleRayLanes): every leaf runs the packet kernel.
-std::vector<Ray> four_copies(const std::vector<Ray>& rays, int P) {
-  const std::size_t distinct = std::size_t(P / 4);
-  std::vector<Ray> out;
-  for (std::size_t i = 0; i < rays.size(); i += distinct)
-    for (int k = 0; k < P; ++k) out.push_back(rays[std::min(i + std::size_t(k) % distinct, rays.size() - 1)]);
-  return out;
-}
-
 // A pinhole camera's rays as 4×4 tiles (groups of 16), looking along `fwd`.
 std::vector<Ray> camera_tiles(Vec3f eye, Vec3f fwd, Vec3f right, Vec3f up, int n, float half_width) {
   std::vector<Ray> rays;
@@ -83,16 +60,10 @@ std::vector<Ray> camera_tiles(Vec3f eye, Vec3f fwd, Vec3f right, Vec3f up, int n
 TEST_P(BvhWatertightPacket, HardCaseFamiliesMatchSingleRaysBitForBit) {
   int families = 0;
   for (const HardCaseFamily& f : hard_case_families(5, 1)) {
-    std::unique_ptr<BvhAccelerator> accel;
-    BvhOptions options;
-    options.width = GetParam().width;
-    try {
-      accel = std::make_unique<BvhAccelerator>(f.mesh, config(), options);
-    } catch (const std::exception&) {
-      continue;  // a family the BVH refuses (non-finite vertices)
-    }
+    const std::unique_ptr<BvhAccelerator> accel = bvh_unless_refused(f.mesh);
+    if (!accel) continue;
     const int P = accel->traversal().packet_width;
-    const int hits = expect_lanes_exact(*accel, four_copies(f.rays, P), f.name + " (four copies)");
+    const int hits = expect_lanes_exact(*accel, test::four_copies(f.rays, P), f.name + " (four copies)");
     expect_lanes_exact(*accel, f.rays, f.name);
     if (f.crossing) {  // watertight: every crossing ray hits, in packets too
       std::size_t single = 0;
@@ -111,7 +82,7 @@ TEST_P(BvhWatertightPacket, RandomRaysAndCamerasOfEveryPermutationMatchSingleRay
   const int P = a.traversal().packet_width;
   // random rays (axis-parallel with −0, per-lane tmin and tmax): packets mixing every permutation
   std::vector<Ray> rays = test::random_rays(1200, 1.5f, 42);
-  EXPECT_GT(expect_lanes_exact(a, four_copies(rays, P), "random, four copies"), 500);
+  EXPECT_GT(expect_lanes_exact(a, test::four_copies(rays, P), "random, four copies"), 500);
   expect_lanes_exact(a, rays, "random");
   // cameras along ±x, ±y, ±z (one permutation per packet), then wide ones whose tiles straddle the
   // diagonals where the dominant axis changes (several permutations in one packet)
@@ -184,7 +155,7 @@ TEST_P(BvhWatertightPacket, PacketLeavesRunThePacketKernelNotTheSingleRayFallbac
   g_real = &triangle_kernels(GetParam().isa, Intersector::watertight);
   std::vector<Ray> inside = test::random_rays(400, 0.5f, 51);
   for (Ray& r : inside) r.tmax = kInf;  // every ray reaches the sphere
-  const std::vector<Ray> rays = four_copies(inside, P);
+  const std::vector<Ray> rays = test::four_copies(inside, P);
   for (const Intersector label : {Intersector::watertight, Intersector::watertight64, Intersector::mt64}) {
     TriangleKernels spy = *g_real;
     spy.intersector = label;
