@@ -113,12 +113,17 @@ bool BvhAccelerator::occluded(const Ray& ray, const HitFilter* filter) const {
 void BvhAccelerator::occluded_stream(const Ray* rays, uint8_t* occluded, std::size_t n,
                                      const HitFilter* filters) const {
   const std::size_t w = traversal_->occluded_packet ? std::size_t(traversal_->packet_width) : 1;
+  // Occlusion is coherent along a stream: a packet after a mostly occluded one orders its children
+  // front to back (benchmarks.md#decision-any-hit-packets).
+  bool ordered = false;
   for (std::size_t i = 0; i < n; i += w) {
     const std::size_t count = std::min(n - i, w);
     if (count > 1 && packet_aligned(rays + i, count)) {
-      const unsigned hit = traversal_->occluded_packet(tree_.arrays(), tris_.arrays(), *kernels_, rays + i,
-                                                       (1u << count) - 1u, filters ? filters + i : nullptr);
+      const unsigned hit =
+          traversal_->occluded_packet(tree_.arrays(), tris_.arrays(), *kernels_, rays + i, (1u << count) - 1u,
+                                      filters ? filters + i : nullptr, ordered);
       for (std::size_t k = 0; k < count; ++k) occluded[i + k] = uint8_t((hit >> k) & 1u);
+      ordered = 2 * std::size_t(__builtin_popcount(hit)) > count;
     } else {
       for (std::size_t k = i; k < i + count; ++k)
         occluded[k] = this->occluded(rays[k], filters ? &filters[k] : nullptr);

@@ -28,10 +28,12 @@ struct BvhTraversal {
                          const Ray* rays, Hit* hits, unsigned active);
   // Any-hit queries of the rays rays[k] for the lanes k set in `active` (k < packet_width; the
   // other rays not read), traversed as one packet: bit k of the result is occluded(rays[k],
-  // filters ? &filters[k] : nullptr) (filters: null or one per lane). Null when the ISA has no packets.
+  // filters ? &filters[k] : nullptr) (filters: null or one per lane); `ordered`: children front to
+  // back, for packets whose lanes are expected to be mostly occluded (the same answers either way).
+  // Null when the ISA has no packets.
   unsigned (*occluded_packet)(const BvhArrays& bvh, const TriangleArrays& tris,
                               const TriangleKernels& kernels, const Ray* rays, unsigned active,
-                              const HitFilter* filters);
+                              const HitFilter* filters, bool ordered);
   int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
   // The leaves call a float kernel of this ISA directly instead of through the kernel table
   // (default_direct_leaf): `mt` in closest() (on AVX2 also in occluded()), `watertight` in both.

@@ -4,8 +4,11 @@
 // them at once and entered when any enters it; a leaf is intersected by a ray-packet kernel (one
 // triangle against every lane per step: mt_packet_occluded, watertight_packet_occluded) for this
 // unit's float `mt` and `watertight` tables, else ray by ray through the table. A lane leaves the
-// packet at its first hit, and the packet ends when every lane has one. No child order: as the
-// single-ray any-hit traversal, any hit ends a lane, so the nearest need not come first. When only
+// packet at its first hit, and the packet ends when every lane has one. Children are entered front
+// to back (by the entry distance of their lowest hit lane) when the caller expects most lanes to be
+// occluded — the nearest occluders end them soonest — and in node order otherwise: a lane that
+// reaches its end unoccluded visits every child it enters whatever the order, and the sort's
+// branches cost (benchmarks.md#decision-any-hit-packets). When only
 // kSingleRayLanes or fewer lanes remain in a subtree, they finish it by single-ray traversal
 // (bvh_occluded_from), as the closest-hit packets do.
 //
@@ -49,7 +52,7 @@ RAYVEC_INLINE unsigned packet_leaf_occluded(const TriangleArrays& tris, const Tr
 // The traversal proper, from the root with the lanes `lanes`; box tests by `boxes`, children
 // pre-tested by `children` (both from with_packet_boxes). Returns the occluded lanes. Leaf: the
 // single-ray leaf policy of the table, for lanes that finish a subtree alone.
-template <class B, class Leaf, class Boxes, bool WithHull>
+template <class B, class Leaf, bool Ordered, class Boxes, bool WithHull>
 unsigned bvh_packet_occlude(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                             const Ray* rays, unsigned lanes, Boxes& boxes,
                             PacketChildren<B, WithHull>& children, const PacketAnyRun& run) {
@@ -78,16 +81,26 @@ unsigned bvh_packet_occlude(const BvhArrays& bvh, const TriangleArrays& tris, co
     } else if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];
       alignas(64) float tn[vfloat::W];
+      float dist[N];  // Ordered: the entry distances of stack[base ..]
       const uint32_t base = sp;
       for (unsigned cm = children.of(node.bounds); cm != 0; cm &= cm - 1) {
         const int c = __builtin_ctz(cm);
         if (node.ref[c] == kEmptyRef) break;  // the used children come first
         const unsigned m = boxes.template hits<N>(node.bounds, c, lanes, tn);
         if (m == 0) continue;
-        stack[sp++] = Item{node.ref[c], m};
+        uint32_t j = sp++;
+        if constexpr (Ordered) {  // insertion by entry distance, farthest deepest
+          const float d = tn[__builtin_ctz(m)];
+          for (; j > base && dist[j - 1 - base] < d; --j) {
+            stack[j] = stack[j - 1];
+            dist[j - base] = dist[j - 1 - base];
+          }
+          dist[j - base] = d;
+        }
+        stack[j] = Item{node.ref[c], m};
         prefetch_ref<N>(nodes, tris, node.ref[c]);
       }
-      if (sp > base) {  // enter the last child pushed
+      if (sp > base) {  // enter the last child pushed (Ordered: the nearest)
         --sp;
         ref = stack[sp].ref;
         lanes = stack[sp].lanes;
@@ -113,9 +126,10 @@ unsigned bvh_packet_occlude(const BvhArrays& bvh, const TriangleArrays& tris, co
 // packet: bit k of the result is set when occluded(rays[k], filters ? &filters[k] : nullptr) holds
 // — tmin <= t <= tmax, the filter accepting the triangle (filters: null or one per lane). A ray
 // BvhAccelerator would reject (NaN or infinite origin or direction, NaN tmin or tmax) is not occluded.
+// `ordered`: children front to back (the same answers either way).
 template <class B, class PK, class Leaf>
 unsigned bvh_occluded_packet(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
-                             const Ray* rays, unsigned active, const HitFilter* filters) {
+                             const Ray* rays, unsigned active, const HitFilter* filters, bool ordered) {
   constexpr int P = PK::P;
   static_assert(vfloat::W == P, "the packet leaf kernel has one ray per vfloat lane");
   PacketRows s;
@@ -148,7 +162,10 @@ unsigned bvh_occluded_packet(const BvhArrays& bvh, const TriangleArrays& tris, c
   unsigned occluded = 0;
   with_packet_boxes<B, PK>(
       bvh, s, active, [&](auto& boxes, auto& children) __attribute__((always_inline)) {
-        occluded = bvh_packet_occlude<B, Leaf>(bvh, tris, kernels, rays, active, boxes, children, run);
+        occluded =
+            ordered
+                ? bvh_packet_occlude<B, Leaf, true>(bvh, tris, kernels, rays, active, boxes, children, run)
+                : bvh_packet_occlude<B, Leaf, false>(bvh, tris, kernels, rays, active, boxes, children, run);
       });
   return occluded;
 }

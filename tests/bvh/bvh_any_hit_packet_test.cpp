@@ -36,9 +36,13 @@ int expect_same_occlusion(const BvhAccelerator& a, const std::vector<Ray>& rays,
   int occluded = 0, wrong = 0;
   for (std::size_t i = 0; i < rays.size(); i += P) {
     const std::size_t n = std::min(P, rays.size() - i);
-    const unsigned packet = a.traversal().occluded_packet(
-        a.tree().arrays(), a.triangles().arrays(), triangle_kernels(a.config().isa, a.config().intersector),
-        &rays[i], (1u << n) - 1u, filters ? &(*filters)[i] : nullptr);
+    const TriangleKernels& kernels = triangle_kernels(a.config().isa, a.config().intersector);
+    const HitFilter* f = filters ? &(*filters)[i] : nullptr;
+    const unsigned packet = a.traversal().occluded_packet(a.tree().arrays(), a.triangles().arrays(), kernels,
+                                                          &rays[i], (1u << n) - 1u, f, i / P % 2 == 1);
+    const unsigned other = a.traversal().occluded_packet(a.tree().arrays(), a.triangles().arrays(), kernels,
+                                                         &rays[i], (1u << n) - 1u, f, i / P % 2 == 0);
+    EXPECT_EQ(packet, other) << what << " packet at " << i << ": children in node order and front to back";
     for (std::size_t k = 0; k < n; ++k) {
       const bool want = a.occluded(rays[i + k], filters ? &(*filters)[i + k] : nullptr);
       const bool same = want == bool((packet >> k) & 1u) && want == bool(stream[i + k]);
@@ -171,7 +175,8 @@ TEST_P(BvhAnyHitPacket, FullPacketsRunThePacketKernelNotTheSingleRayFallback) {
     int occluded = 0;
     for (std::size_t i = 0; i < rays.size(); i += std::size_t(P))
       occluded += __builtin_popcount(a.traversal().occluded_packet(a.tree().arrays(), a.triangles().arrays(),
-                                                                   spy, &rays[i], (1u << P) - 1u, nullptr));
+                                                                   spy, &rays[i], (1u << P) - 1u, nullptr,
+                                                                   i / std::size_t(P) % 2 == 0));
     EXPECT_EQ(occluded, int(rays.size())) << "from inside a closed sphere every ray is occluded";
     if (label == own && packet_kernel)
       EXPECT_EQ(g_single_calls.load(), 0)
