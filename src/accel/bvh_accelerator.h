@@ -66,8 +66,8 @@ class BvhAccelerator final : public Accelerator {
   bool occluded(const Ray& ray, const HitFilter* filter = nullptr) const override;
   Hit closest_counted(const Ray& ray, TraversalCost& cost) const override;
   bool occluded_counted(const Ray& ray, TraversalCost& cost) const override;
-  // Consecutive groups of packet_width rays (16 on AVX-512, 8 on AVX2) are traversed as packets —
-  // best for coherent rays such as a 4×4 camera tile; results equal closest() ray by ray.
+  // Consecutive groups of packet_width rays (16: one zmm on AVX-512, two ymm on AVX2) are traversed as
+  // packets — best for coherent rays such as a 4×4 camera tile; results equal closest() ray by ray.
   void closest_stream(const Ray* rays, Hit* hits, std::size_t n) const override;
   // Packets for the groups of packet_width rays that share an origin and whose directions lie within
   // kPacketCone of the first ray's (a pinhole camera's rays in scan order); single rays for the
@@ -80,6 +80,7 @@ class BvhAccelerator final : public Accelerator {
   // (benchmarks.md#decision-any-hit-packets).
   void occluded_stream(const Ray* rays, uint8_t* occluded, std::size_t n,
                        const HitFilter* filters = nullptr) const override;
+  std::size_t stream_rays() const override { return 256; }
   std::size_t bytes() const override { return tris_.bytes() + tree_.bytes(); }
   const TraceConfig& config() const override { return config_; }
 

@@ -34,7 +34,7 @@ struct BvhTraversal {
   unsigned (*occluded_packet)(const BvhArrays& bvh, const TriangleArrays& tris,
                               const TriangleKernels& kernels, const Ray* rays, unsigned active,
                               const HitFilter* filters, bool ordered);
-  int packet_width;  // rays per packet (16 AVX-512, 8 AVX2, 0 none)
+  int packet_width;  // rays per packet (16 on AVX-512 and AVX2, 0 none)
   // The leaves call a float kernel of this ISA directly instead of through the kernel table
   // (default_direct_leaf): `mt` in closest() (on AVX2 also in occluded()), `watertight` in both.
   // AVX-512's occluded() calls its float `mt` kernel directly whatever this says.

@@ -1,22 +1,21 @@
 // Packet traversal of a WideBvh for any-hit queries (shadow rays of a camera tile toward one light,
-// visibility segments from one origin): P rays (16 on AVX-512, 8 on AVX2), one per lane, walk the
-// tree together with a mask of the lanes that have no hit yet. A child box is tested against all of
-// them at once and entered when any enters it; a leaf is intersected by a ray-packet kernel (one
-// triangle against every lane per step: mt_packet_occluded, watertight_packet_occluded) for this
-// unit's float `mt` and `watertight` tables, else ray by ray through the table. A lane leaves the
-// packet at its first hit, and the packet ends when every lane has one. Children are entered front
-// to back (by the entry distance of their lowest hit lane) when the caller expects most lanes to be
-// occluded — the nearest occluders end them soonest — and in node order otherwise: a lane that
-// reaches its end unoccluded visits every child it enters whatever the order, and the sort's
-// branches cost (benchmarks.md#decision-any-hit-packets). When only
-// kSingleRayLanes or fewer lanes remain in a subtree, they finish it by single-ray traversal
-// (bvh_occluded_from), as the closest-hit packets do.
+// visibility segments from one origin): P = 16 rays (one zmm on AVX-512, two ymm on AVX2), one per lane, walk
+// the tree together with a mask of the lanes that have no hit yet. A child box is tested against all of them
+// at once and entered when any enters it; a leaf is intersected by a ray-packet kernel (one triangle against
+// every lane per step: mt_packet_occluded, watertight_packet_occluded) for this unit's float `mt` and
+// `watertight` tables, else ray by ray through the table. A lane leaves the packet at its first hit, and the
+// packet ends when every lane has one. Children are entered front to back (by the entry distance of their
+// lowest hit lane) when the caller expects most lanes to be occluded — the nearest occluders end them soonest
+// — and in node order otherwise: a lane that reaches its end unoccluded visits every child it enters whatever
+// the order, and the sort's branches cost (benchmarks.md#decision-any-hit-packets). When only kSingleRayLanes
+// or fewer lanes remain in a subtree, they finish it by single-ray traversal (bvh_occluded_from), as the
+// closest-hit packets do.
 //
 // Same answers as the single-ray query ray by ray: a ray is occluded when some triangle passes the
 // kernel's test for it (and its filter), whatever the order the leaves come in; the packet kernels
 // test each (ray, triangle) with the single-ray kernels' arithmetic bit for bit, and the box tests
 // (packet_traversal.inl's) never drop a box the exact ray enters.
-// Included by the ISA units after packet_traversal.inl (kThisIsa, vfloat of P lanes).
+// Included by the ISA units after packet_traversal.inl (kThisIsa; pfloat: packet_lanes_<isa>.h).
 
 // The any-hit leaf kernel of a packet, chosen once per packet.
 enum class PacketAnyLeaf { ray_by_ray, mt, watertight };
@@ -25,9 +24,9 @@ enum class PacketAnyLeaf { ray_by_ray, mt, watertight };
 // tlimit for watertight) and the lanes' filters (null or one per lane).
 struct PacketAnyRun {
   PacketAnyLeaf leaf;
-  const MtPacketAnyRays<vfloat>& q;
-  const WatertightPacketRays<vfloat>& wq;
-  vfloat tlimit;
+  const MtPacketAnyRays<pfloat>& q;
+  const WatertightPacketRays<pfloat>& wq;
+  pfloat tlimit;
   const HitFilter* filters;
 };
 
@@ -37,9 +36,9 @@ RAYVEC_INLINE unsigned packet_leaf_occluded(const TriangleArrays& tris, const Tr
                                             const PacketAnyRun& run) {
   const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
   if (run.leaf == PacketAnyLeaf::mt)
-    return mt_packet_occluded<vfloat>(tris, begin, end, run.q, lanes, run.filters);
+    return mt_packet_occluded<pfloat>(tris, begin, end, run.q, lanes, run.filters);
   if (run.leaf == PacketAnyLeaf::watertight)
-    return watertight_packet_occluded<vfloat>(tris, begin, end, run.wq, run.tlimit, lanes, run.filters);
+    return watertight_packet_occluded<pfloat>(tris, begin, end, run.wq, run.tlimit, lanes, run.filters);
   unsigned found = 0;
   for (unsigned m = lanes; m != 0; m &= m - 1) {
     const int k = __builtin_ctz(m);
@@ -80,7 +79,7 @@ unsigned bvh_packet_occlude(const BvhArrays& bvh, const TriangleArrays& tris, co
       if (open == 0) break;
     } else if (!(ref & kLeafFlag)) {
       const WideNode<N>& node = nodes[ref];
-      alignas(64) float tn[vfloat::W];
+      alignas(64) float tn[pfloat::W];
       float dist[N];  // Ordered: the entry distances of stack[base ..]
       const uint32_t base = sp;
       for (unsigned cm = children.of(node.bounds); cm != 0; cm &= cm - 1) {
@@ -131,7 +130,7 @@ template <class B, class PK, class Leaf>
 unsigned bvh_occluded_packet(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                              const Ray* rays, unsigned active, const HitFilter* filters, bool ordered) {
   constexpr int P = PK::P;
-  static_assert(vfloat::W == P, "the packet leaf kernel has one ray per vfloat lane");
+  static_assert(pfloat::W == P, "the packet leaf kernel has one ray per lane");
   PacketRows s;
   active = load_packet<PK>(bvh, rays, active, s);
   if (active == 0) return 0;
@@ -146,19 +145,19 @@ unsigned bvh_occluded_packet(const BvhArrays& bvh, const TriangleArrays& tris, c
     hi[k] = limit[k] * kMtWiden;
     lo[k] = mt_lower(s.soa[6][k]);
   }
-  const MtPacketAnyRays<vfloat> q{
-      {vfloat::load(s.soa[0]), vfloat::load(s.soa[1]), vfloat::load(s.soa[2]), vfloat::load(s.soa[3]),
-       vfloat::load(s.soa[4]), vfloat::load(s.soa[5]), vfloat::load(s.soa[6])},
-      vfloat::load(lo),
-      vfloat::load(hi),
-      vfloat::load(limit)};
-  WatertightPacketRays<vfloat> wq;  // set only for the watertight leaf
+  const MtPacketAnyRays<pfloat> q{
+      {pfloat::load(s.soa[0]), pfloat::load(s.soa[1]), pfloat::load(s.soa[2]), pfloat::load(s.soa[3]),
+       pfloat::load(s.soa[4]), pfloat::load(s.soa[5]), pfloat::load(s.soa[6])},
+      pfloat::load(lo),
+      pfloat::load(hi),
+      pfloat::load(limit)};
+  WatertightPacketRays<pfloat> wq;  // set only for the watertight leaf
   if (leaf == PacketAnyLeaf::watertight) {
     const float* const o[3] = {s.soa[0], s.soa[1], s.soa[2]};
     const float* const d[3] = {s.soa[3], s.soa[4], s.soa[5]};
-    wq = watertight_packet_rays<vfloat>(o, d, s.soa[6], active);
+    wq = watertight_packet_rays<pfloat>(o, d, s.soa[6], active);
   }
-  const PacketAnyRun run{leaf, q, wq, vfloat::load(limit), filters};
+  const PacketAnyRun run{leaf, q, wq, pfloat::load(limit), filters};
   unsigned occluded = 0;
   with_packet_boxes<B, PK>(
       bvh, s, active, [&](auto& boxes, auto& children) __attribute__((always_inline)) {

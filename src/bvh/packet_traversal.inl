@@ -1,22 +1,21 @@
-// Packet traversal of a WideBvh for coherent rays (a 4×4 camera tile): P rays (16 on AVX-512, 8 on
-// AVX2), one per lane, walk the tree together with a mask of active lanes (Wald, Slusallek, Benthin
-// & Wagner 2001; with wide nodes as in Embree's hybrid traversal). Each child box is tested against
-// all active lanes at once; the children hit by any lane are visited front to back by the entry
-// distance of their lowest hit lane, and dropped on pop once every lane has a nearer hit than the
-// entry distance of their nearest lane. With the
-// float `mt` or `watertight` table of this ISA a leaf is intersected by a ray-packet kernel
-// (packet_leaf.inl, watertight_packet_leaf.inl: one triangle against all lanes per step, exactly the
-// single-ray answer per lane); other intersectors, and `mt` packets mixing tmin = 0 with tmin != 0,
-// intersect a leaf ray by ray with the triangle kernel table (two lanes per call through the table's pair
-// kernel measured slower than one: packets 1.1x single rays instead of 1.5x). When only kSingleRayLanes or
-// fewer lanes remain active in a subtree, the packet has diverged: those lanes finish that subtree by
-// single-ray traversal (bvh_closest_from). Uniform forward packets first test every child of a node against
-// the hull of their lanes (PacketChildren below) and then only the children it passes lane by lane. Box
-// tests: packets whose lanes all have tmin >= 0 (camera rays) take the forward test (PK::Forward: one FMA a
-// slab, the widening folded into the reciprocals as in the single-ray forward test, and without per-lane
-// blends when all lanes share the direction signs); the others take the general test (PK::hits), as
+// Packet traversal of a WideBvh for coherent rays (a 4×4 camera tile): P = 16 rays (one zmm on
+// AVX-512, two ymm on AVX2: pfloat), one per lane, walk the tree together with a mask of active lanes (Wald,
+// Slusallek, Benthin & Wagner 2001; with wide nodes as in Embree's hybrid traversal). Each child box is
+// tested against all active lanes at once; the children hit by any lane are visited front to back by the
+// entry distance of their lowest hit lane, and dropped on pop once every lane has a nearer hit than the entry
+// distance of their nearest lane. With the float `mt` or `watertight` table of this ISA a leaf is intersected
+// by a ray-packet kernel (packet_leaf.inl, watertight_packet_leaf.inl: one triangle against all lanes per
+// step, exactly the single-ray answer per lane); other intersectors, and `mt` packets mixing tmin = 0 with
+// tmin != 0, intersect a leaf ray by ray with the triangle kernel table (two lanes per call through the
+// table's pair kernel measured slower than one: packets 1.1x single rays instead of 1.5x). When only
+// kSingleRayLanes or fewer lanes remain active in a subtree, the packet has diverged: those lanes finish that
+// subtree by single-ray traversal (bvh_closest_from). Uniform forward packets first test every child of a
+// node against the hull of their lanes (PacketChildren below) and then only the children it passes lane by
+// lane. Box tests: packets whose lanes all have tmin >= 0 (camera rays) take the forward test (PK::Forward:
+// one FMA a slab, the widening folded into the reciprocals as in the single-ray forward test, and without
+// per-lane blends when all lanes share the direction signs); the others take the general test (PK::hits), as
 // single_ray_traversal.inl's tmin < 0 rays do. Included by the ISA units after single_ray_traversal.inl,
-// packet_leaf.inl and watertight_packet_leaf.inl (kThisIsa, vfloat of P lanes).
+// packet_leaf.inl and watertight_packet_leaf.inl (kThisIsa; pfloat: packet_lanes_<isa>.h).
 
 inline constexpr int kSingleRayLanes = 2;
 
@@ -30,19 +29,19 @@ struct PacketItem {
 // PacketLanes::hits — the same subtract-then-multiply slabs, which are monotonic in the box planes,
 // and the same widening, except that an infinite end stays infinite instead of becoming NaN — so a
 // lane that enters any box inside [lo, hi] under the traversal's test is never dropped here.
-RAYVEC_INLINE unsigned packet_box_lanes(const float lo[3], const float hi[3], const vfloat o[3],
-                                        const vfloat r[3], vfloat tmin, vfloat tmax, float eps,
+RAYVEC_INLINE unsigned packet_box_lanes(const float lo[3], const float hi[3], const pfloat o[3],
+                                        const pfloat r[3], pfloat tmin, pfloat tmax, float eps,
                                         unsigned active) {
-  const vfloat zero = vfloat::broadcast(0.0f);
-  vfloat tn = vfloat::broadcast(-__builtin_inff()), tf = vfloat::broadcast(__builtin_inff());
+  const pfloat zero = pfloat::broadcast(0.0f);
+  pfloat tn = pfloat::broadcast(-__builtin_inff()), tf = pfloat::broadcast(__builtin_inff());
   for (int a = 0; a < 3; ++a) {
-    const vfloat::Mask neg = r[a] < zero;  // near plane hi, far plane lo
-    const vfloat bl = vfloat::broadcast(lo[a]), bh = vfloat::broadcast(hi[a]);
+    const pfloat::Mask neg = r[a] < zero;  // near plane hi, far plane lo
+    const pfloat bl = pfloat::broadcast(lo[a]), bh = pfloat::broadcast(hi[a]);
     tn = vmax((select(neg, bl, bh) - o[a]) * r[a], tn);  // a NaN slab (0·inf) is skipped
     tf = vmin((select(neg, bh, bl) - o[a]) * r[a], tf);
   }
-  tn = vmin(fmadd(abs(tn), vfloat::broadcast(-eps), tn), tn);  // inf − inf = NaN: keep tn
-  tf = vmax(fmadd(abs(tf), vfloat::broadcast(eps), tf), tf);
+  tn = vmin(fmadd(abs(tn), pfloat::broadcast(-eps), tn), tn);  // inf − inf = NaN: keep tn
+  tf = vmax(fmadd(abs(tf), pfloat::broadcast(eps), tf), tf);
   return bits(vmax(tn, tmin) <= vmin(tf, tmax)) & active;
 }
 
@@ -73,8 +72,8 @@ struct PacketRun {
   float* tmax;     // min(tmax, hit.t) per lane
   float* initial;  // next_up(tmax) per lane
   PacketLeaf leaf;
-  const MtPacketRays<vfloat>& q;
-  const WatertightPacketRays<vfloat>& wq;
+  const MtPacketRays<pfloat>& q;
+  const WatertightPacketRays<pfloat>& wq;
 };
 
 RAYVEC_INLINE float vmax_abs(float a, float b) {
@@ -137,7 +136,7 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
   float* const tmax = run.tmax;
   float* const initial = run.initial;
   const PacketLeaf leaf = run.leaf;
-  const MtPacketRays<vfloat>& q = run.q;
+  const MtPacketRays<pfloat>& q = run.q;
   PacketItem local[kLocalStack];
   PacketItem* stack = bvh.stack_size <= kLocalStack
                           ? local
@@ -198,11 +197,11 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
     } else if (ref != kEmptyRef) {
       const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
       if (leaf == PacketLeaf::mt_tmin_zero) {
-        mt_packet_closest<vfloat, true>(tris, begin, end, q, lanes, tmax, initial, hits);
+        mt_packet_closest<pfloat, true>(tris, begin, end, q, lanes, tmax, initial, hits);
       } else if (leaf == PacketLeaf::mt) {
-        mt_packet_closest<vfloat, false>(tris, begin, end, q, lanes, tmax, initial, hits);
+        mt_packet_closest<pfloat, false>(tris, begin, end, q, lanes, tmax, initial, hits);
       } else if (leaf == PacketLeaf::watertight) {
-        watertight_packet_closest<vfloat>(tris, begin, end, run.wq, lanes, tmax, initial, hits);
+        watertight_packet_closest<pfloat>(tris, begin, end, run.wq, lanes, tmax, initial, hits);
       } else {
         for (unsigned m = lanes; m != 0; m &= m - 1) {
           const int k = __builtin_ctz(m);
@@ -226,8 +225,8 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
 
 // A packet's rays as SoA rows: o (0..2), d (3..5), tmin (6), tmax (7); and 1/d.
 struct PacketRows {
-  alignas(64) float soa[8][vfloat::W];
-  alignas(64) float rd[3][vfloat::W];
+  alignas(64) float soa[8][pfloat::W];
+  alignas(64) float rd[3][pfloat::W];
 };
 
 // Transposes rays[0..P) of the lanes `active` (the other rays not read) into `s` and forms 1/d.
@@ -238,14 +237,14 @@ RAYVEC_INLINE unsigned load_packet(const BvhArrays& bvh, const Ray* rays, unsign
   static_assert(sizeof(Ray) == 8 * sizeof(float), "PK::load_rays reads a Ray as 8 floats");
   active = PK::load_rays(reinterpret_cast<const float*>(rays), active, s.soa);
   if (active == 0) return 0;
-  const vfloat one = vfloat::broadcast(1.0f);
+  const pfloat one = pfloat::broadcast(1.0f);
   for (int a = 0; a < 3; ++a)  // ±0 gives ±inf with the sign of the zero, as 1.0f / d does
-    (one / vfloat::load(s.soa[3 + a])).store(s.rd[a]);
+    (one / pfloat::load(s.soa[3 + a])).store(s.rd[a]);
   // Camera packets often miss the whole mesh (the background): the root's box (the union of its
   // children's, kept by WideBvh) first, one test instead of N, dropping the lanes that miss it.
-  const vfloat o[3] = {vfloat::load(s.soa[0]), vfloat::load(s.soa[1]), vfloat::load(s.soa[2])};
-  const vfloat r[3] = {vfloat::load(s.rd[0]), vfloat::load(s.rd[1]), vfloat::load(s.rd[2])};
-  return packet_box_lanes(bvh.root_lo, bvh.root_hi, o, r, vfloat::load(s.soa[6]), vfloat::load(s.soa[7]),
+  const pfloat o[3] = {pfloat::load(s.soa[0]), pfloat::load(s.soa[1]), pfloat::load(s.soa[2])};
+  const pfloat r[3] = {pfloat::load(s.rd[0]), pfloat::load(s.rd[1]), pfloat::load(s.rd[2])};
+  return packet_box_lanes(bvh.root_lo, bvh.root_hi, o, r, pfloat::load(s.soa[6]), pfloat::load(s.soa[7]),
                           bvh.box_epsilon, active);
 }
 
@@ -270,19 +269,19 @@ template <class B, class PK, class Traverse>
 RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, unsigned active,
                                      const Traverse& traverse) {
   const float* const rows[8] = {s.soa[0], s.soa[1], s.soa[2], s.rd[0], s.rd[1], s.rd[2], s.soa[6], s.soa[7]};
-  const vfloat zero = vfloat::broadcast(0.0f);
-  const vfloat big = vfloat::broadcast(0x1p120f);
-  vfloat m =
-      vmax(vmax(abs(vfloat::load(s.soa[0])), abs(vfloat::load(s.soa[1]))), abs(vfloat::load(s.soa[2])));
-  for (int a = 0; a < 3; ++a) m = vmax(m, vfloat::broadcast(vmax_abs(bvh.root_lo[a], bvh.root_hi[a])));
-  const vfloat r =
-      vmax(vmax(abs(vfloat::load(s.rd[0])), abs(vfloat::load(s.rd[1]))), abs(vfloat::load(s.rd[2])));
-  if (bvh.box_epsilon >= 0x1p-20f && (bits(vfloat::load(s.soa[6]) >= zero) & active) == active &&
+  const pfloat zero = pfloat::broadcast(0.0f);
+  const pfloat big = pfloat::broadcast(0x1p120f);
+  pfloat m =
+      vmax(vmax(abs(pfloat::load(s.soa[0])), abs(pfloat::load(s.soa[1]))), abs(pfloat::load(s.soa[2])));
+  for (int a = 0; a < 3; ++a) m = vmax(m, pfloat::broadcast(vmax_abs(bvh.root_lo[a], bvh.root_hi[a])));
+  const pfloat r =
+      vmax(vmax(abs(pfloat::load(s.rd[0])), abs(pfloat::load(s.rd[1]))), abs(pfloat::load(s.rd[2])));
+  if (bvh.box_epsilon >= 0x1p-20f && (bits(pfloat::load(s.soa[6]) >= zero) & active) == active &&
       (bits(r * m <= big) & active) == active) {
     unsigned neg[3];  // lanes with a negative direction component; uniform: none or all
     bool uniform = true;
     for (int a = 0; a < 3; ++a) {
-      neg[a] = bits(vfloat::load(s.rd[a]) < zero) & active;
+      neg[a] = bits(pfloat::load(s.rd[a]) < zero) & active;
       uniform = uniform && (neg[a] == 0 || neg[a] == active);
     }
     if (uniform) {
@@ -308,7 +307,7 @@ template <class B, class PK>
 void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
                         const Ray* rays, Hit* hits, unsigned active) {
   constexpr int P = PK::P;
-  static_assert(vfloat::W == P, "the packet leaf kernel has one ray per vfloat lane");
+  static_assert(pfloat::W == P, "the packet leaf kernel has one ray per lane");
   // Streams of packets (closest_stream, tiles of a frame) lie one after the other: start loading
   // the rays and hits of the packet three ahead now, as the time of one packet is far too short
   // for the hardware to hide the memory latency of its first loads (benchmarks.md#decision-prefetch).
@@ -328,8 +327,8 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const 
   PacketRows s;  // tmax (row 7) becomes min(tmax, hit.t) per lane as hits are found
   active = load_packet<PK>(bvh, rays, active, s);
   if (active == 0) return;
-  const vfloat zero = vfloat::broadcast(0.0f);
-  const vfloat tmin0 = vfloat::load(s.soa[6]);
+  const pfloat zero = pfloat::broadcast(0.0f);
+  const pfloat tmin0 = pfloat::load(s.soa[6]);
   const unsigned tmin_zero = bits((tmin0 >= zero) & (tmin0 <= zero));
   float* tmax = s.soa[7];
 
@@ -351,15 +350,15 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const 
     initial[k] = next_up(tmax[k]);
     lo[k] = leaf == PacketLeaf::mt ? mt_lower(s.soa[6][k]) : 0.0f;
   }
-  const MtPacketRays<vfloat> q{
-      {vfloat::load(s.soa[0]), vfloat::load(s.soa[1]), vfloat::load(s.soa[2]), vfloat::load(s.soa[3]),
-       vfloat::load(s.soa[4]), vfloat::load(s.soa[5]), tmin0},
-      vfloat::load(lo)};
-  WatertightPacketRays<vfloat> wq;  // set only for the watertight leaf
+  const MtPacketRays<pfloat> q{
+      {pfloat::load(s.soa[0]), pfloat::load(s.soa[1]), pfloat::load(s.soa[2]), pfloat::load(s.soa[3]),
+       pfloat::load(s.soa[4]), pfloat::load(s.soa[5]), tmin0},
+      pfloat::load(lo)};
+  WatertightPacketRays<pfloat> wq;  // set only for the watertight leaf
   if (leaf == PacketLeaf::watertight) {
     const float* const o[3] = {s.soa[0], s.soa[1], s.soa[2]};
     const float* const d[3] = {s.soa[3], s.soa[4], s.soa[5]};
-    wq = watertight_packet_rays<vfloat>(o, d, s.soa[6], active);
+    wq = watertight_packet_rays<pfloat>(o, d, s.soa[6], active);
   }
   const PacketRun run{tmax, initial, leaf, q, wq};
   with_packet_boxes<B, PK>(

@@ -14,6 +14,9 @@ namespace rayvec::avx512 {
 
 #include "bvh/simd/packet_lanes.inl"
 
+// The lane type of a packet: one zmm of 16 rays.
+using pfloat = vfloat;
+
 struct PacketLanes16 : PacketLanesBase<vfloat, PacketLanes16> {
   template <bool Uniform>
   using Forward = PacketForward<vfloat, Uniform>;
