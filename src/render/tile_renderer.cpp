@@ -1,5 +1,6 @@
 #include "render/tile_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "platform/stopwatch.h"
@@ -36,16 +37,29 @@ void TileRenderer::render(const TileRect& rect, float* out) {
     costs_.assign(n, TraversalCost{});
     bounces_.assign(n, 0);
   }
+  block_order_.clear();
+  const int h = n / w;
+  for (int by = 0; by < h; by += 4)
+    for (int bx = 0; bx < w; bx += 4)
+      for (int y = by; y < std::min(by + 4, h); ++y)
+        for (int x = bx; x < std::min(bx + 4, w); ++x) block_order_.push_back(y * w + x);
   for (int s = 0; s < spp; ++s) {
     const auto ta = std::chrono::steady_clock::now();
     batch_.resize(n);
     hits_.resize(n);
-    for (int i = 0; i < n; ++i) {
-      const int x = rect.x0 + i % w, y = rect.y0 + i / w;
+    // traced by 4×4 blocks (a packet's rays closer together than a row's), shaded in pixel order
+    block_rays_.resize(n);
+    block_hits_.resize(n);
+    for (int j = 0; j < n; ++j) {
+      const int i = block_order_[j], x = rect.x0 + i % w, y = rect.y0 + i / w;
       const auto [sx, sy] = sample_position(x, y, s, spp);
-      batch_[i] = camera_.ray(float(x) + sx, float(y) + sy);
+      block_rays_[j] = camera_.ray(float(x) + sx, float(y) + sy);
     }
-    accel_.closest_stream(batch_.data(), hits_.data(), n);
+    accel_.closest_stream(block_rays_.data(), block_hits_.data(), n);
+    for (int j = 0; j < n; ++j) {
+      batch_[block_order_[j]] = block_rays_[j];
+      hits_[block_order_[j]] = block_hits_[j];
+    }
     rays.primary += uint64_t(n);
     const auto tb = std::chrono::steady_clock::now();
     primary_seconds += std::chrono::duration<double>(tb - ta).count();
