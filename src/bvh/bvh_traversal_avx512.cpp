@@ -45,65 +45,11 @@ struct DirectMtLeaf {
   using AnyHit = MtAnyHitLeaf<vfloat>;
 };
 
-// constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhTraversal k8{Isa::avx512,
-                                8,
-                                &bvh_closest<BoxLanes8>,
-                                &bvh_occluded<BoxLanes8, DirectMtLeaf>,
-                                &bvh_closest_packet<BoxLanes8, PacketLanes16>,
-                                &bvh_occluded_packet<BoxLanes8, PacketLanes16, DirectMtLeaf>,
-                                16};
-constinit const BvhTraversal k16{Isa::avx512,
-                                 16,
-                                 &bvh_closest<BoxLanes16>,
-                                 &bvh_occluded<BoxLanes16, DirectMtLeaf>,
-                                 &bvh_closest_packet<BoxLanes16, PacketLanes16>,
-                                 &bvh_occluded_packet<BoxLanes16, PacketLanes16, DirectMtLeaf>,
-                                 16};
-constinit const BvhTraversal k8_direct{Isa::avx512,
-                                       8,
-                                       &bvh_closest<BoxLanes8, DirectMtLeaf>,
-                                       &bvh_occluded<BoxLanes8, DirectMtLeaf>,
-                                       &bvh_closest_packet<BoxLanes8, PacketLanes16>,
-                                       &bvh_occluded_packet<BoxLanes8, PacketLanes16, DirectMtLeaf>,
-                                       16,
-                                       true};
-constinit const BvhTraversal k16_direct{Isa::avx512,
-                                        16,
-                                        &bvh_closest<BoxLanes16, DirectMtLeaf>,
-                                        &bvh_occluded<BoxLanes16, DirectMtLeaf>,
-                                        &bvh_closest_packet<BoxLanes16, PacketLanes16>,
-                                        &bvh_occluded_packet<BoxLanes16, PacketLanes16, DirectMtLeaf>,
-                                        16,
-                                        true};
-constinit const BvhTraversal k8_watertight{
-    Isa::avx512,
-    8,
-    &bvh_closest<BoxLanes8, WatertightLeaf<vfloat>>,
-    &bvh_occluded<BoxLanes8, WatertightLeaf<vfloat>>,
-    &bvh_closest_packet<BoxLanes8, PacketLanes16>,
-    &bvh_occluded_packet<BoxLanes8, PacketLanes16, WatertightLeaf<vfloat>>,
-    16,
-    true};
-constinit const BvhTraversal k16_watertight{
-    Isa::avx512,
-    16,
-    &bvh_closest<BoxLanes16, WatertightLeaf<vfloat>>,
-    &bvh_occluded<BoxLanes16, WatertightLeaf<vfloat>>,
-    &bvh_closest_packet<BoxLanes16, PacketLanes16>,
-    &bvh_occluded_packet<BoxLanes16, PacketLanes16, WatertightLeaf<vfloat>>,
-    16,
-    true};
+// The any-hit leaf of the tables whose closest-hit leaves go through the table: the float `mt`
+// kernel called directly whatever the closest-hit choice (benchmarks.md#decision-any-hit-leaf-lanes).
+using TableAnyHitLeaf = DirectMtLeaf;
 }  // namespace
 
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector) {
-  const bool mt = direct_leaf && intersector == Intersector::mt;
-  const bool watertight = direct_leaf && intersector == Intersector::watertight;
-  switch (width) {
-    case 8: return mt ? &k8_direct : watertight ? &k8_watertight : &k8;
-    case 16: return mt ? &k16_direct : watertight ? &k16_watertight : &k16;
-    default: return nullptr;
-  }
-}
+#include "bvh/traversal_tables.inl"
 
 }  // namespace rayvec::avx512

@@ -44,8 +44,6 @@ __attribute__((noinline)) void watertight_closest_leaf(const TriangleArrays& T, 
   watertight_closest_ray<V>(T, s.r, begin, end, ray, hit);
 }
 
-}  // namespace
-
 template <class V>
 struct WatertightLeaf {
   struct Closest {
@@ -66,3 +64,5 @@ struct WatertightLeaf {
     }
   };
 };
+
+}  // namespace
