@@ -18,7 +18,7 @@ namespace {
 
 class BvhPacketSetup : public test::BvhCaseTest {};
 
-// Camera rays from one eye, in groups of 16 (a 4×4 tile, two 8-ray packets on AVX2).
+// Camera rays from one eye, in groups of 16 (a 4×4 tile, one packet on AVX2 and AVX-512).
 std::vector<Ray> tile_rays(int tiles) {
   std::vector<Ray> rays;
   for (int t = 0; t < tiles; ++t)
