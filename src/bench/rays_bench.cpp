@@ -99,8 +99,9 @@ BenchRays make_bench_rays(const TriangleMesh& mesh, int width, int height, const
   trace_closest(reference, b.primary, hits);
   b.shadow = shadow_rays(b.camera, b.primary, hits);
   // the shadow rays again, by tiles: those of each tile's hits, in the tile's order
+  // (the tiles hold the primary rays, pixel for pixel: their hits are the primary hits reordered)
   std::vector<Hit> tile_hits(b.tiles.rays.size());
-  trace_closest(reference, b.tiles, tile_hits);
+  for (std::size_t j = 0; j < tile_hits.size(); ++j) tile_hits[j] = hits[b.tiles.pixel[j]];
   b.shadow_tiles = shadow_rays(b.camera, b.tiles, tile_hits);
   b.shadow_tile_start.assign(1, 0);
   for (std::size_t k = 0; k + 1 < b.tile_start.size(); ++k) {

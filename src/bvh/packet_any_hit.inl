@@ -1,21 +1,22 @@
 // Packet traversal of a WideBvh for any-hit queries (shadow rays of a camera tile toward one light,
-// visibility segments from one origin): P = 16 rays (one zmm on AVX-512, two ymm on AVX2), one per lane, walk
-// the tree together with a mask of the lanes that have no hit yet. A child box is tested against all of them
-// at once and entered when any enters it; a leaf is intersected by a ray-packet kernel (one triangle against
-// every lane per step: mt_packet_occluded, watertight_packet_occluded) for this unit's float `mt` and
-// `watertight` tables, else ray by ray through the table. A lane leaves the packet at its first hit, and the
-// packet ends when every lane has one. Children are entered front to back (by the entry distance of their
-// lowest hit lane) when the caller expects most lanes to be occluded — the nearest occluders end them soonest
-// — and in node order otherwise: a lane that reaches its end unoccluded visits every child it enters whatever
-// the order, and the sort's branches cost (benchmarks.md#decision-any-hit-packets). When only kSingleRayLanes
-// or fewer lanes remain in a subtree, they finish it by single-ray traversal (bvh_occluded_from), as the
+// visibility segments from one origin): P = 16 rays (one zmm on AVX-512, two ymm on AVX2), one per
+// lane, walk the tree together with a mask of the lanes that have no hit yet. A child box is tested
+// against all of them at once and entered when any enters it; a leaf is intersected by a ray-packet
+// kernel (one triangle against every lane per step: mt_packet_occluded, watertight_packet_occluded)
+// for this unit's float `mt` and `watertight` tables, else ray by ray through the table. A lane
+// leaves the packet at its first hit, and the packet ends when every lane has one. Children are
+// entered front to back (by the entry distance of their lowest hit lane) when the caller expects
+// most lanes to be occluded — the nearest occluders end them soonest — and in node order otherwise:
+// a lane that reaches its end unoccluded visits every child it enters whatever the order, and the
+// sort's branches cost (benchmarks.md#decision-any-hit-packets). When only kSingleRayLanes or fewer
+// lanes remain in a subtree, they finish it by single-ray traversal (bvh_occluded_from), as the
 // closest-hit packets do.
 //
 // Same answers as the single-ray query ray by ray: a ray is occluded when some triangle passes the
 // kernel's test for it (and its filter), whatever the order the leaves come in; the packet kernels
 // test each (ray, triangle) with the single-ray kernels' arithmetic bit for bit, and the box tests
-// (packet_traversal.inl's) never drop a box the exact ray enters.
-// Included by the ISA units after packet_traversal.inl (kThisIsa; pfloat: packet_lanes_<isa>.h).
+// (packet_traversal.inl's) never drop a box the exact ray enters. Included by the ISA units after
+// packet_traversal.inl (kThisIsa; pfloat: packet_lanes_<isa>.h).
 
 // The any-hit leaf kernel of a packet, chosen once per packet.
 enum class PacketAnyLeaf { ray_by_ray, mt, watertight };
@@ -24,7 +25,7 @@ enum class PacketAnyLeaf { ray_by_ray, mt, watertight };
 // tlimit for watertight) and the lanes' filters (null or one per lane).
 struct PacketAnyRun {
   PacketAnyLeaf leaf;
-  const MtPacketAnyRays<pfloat>& q;
+  const MtAnyHitRay<pfloat>& q;
   const WatertightPacketRays<pfloat>& wq;
   pfloat tlimit;
   const HitFilter* filters;
@@ -145,7 +146,7 @@ unsigned bvh_occluded_packet(const BvhArrays& bvh, const TriangleArrays& tris, c
     hi[k] = limit[k] * kMtWiden;
     lo[k] = mt_lower(s.soa[6][k]);
   }
-  const MtPacketAnyRays<pfloat> q{
+  const MtAnyHitRay<pfloat> q{
       {pfloat::load(s.soa[0]), pfloat::load(s.soa[1]), pfloat::load(s.soa[2]), pfloat::load(s.soa[3]),
        pfloat::load(s.soa[4]), pfloat::load(s.soa[5]), pfloat::load(s.soa[6])},
       pfloat::load(lo),

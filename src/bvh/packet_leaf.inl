@@ -189,32 +189,23 @@ RAYVEC_INLINE unsigned packet_filter_accepts(const TriangleArrays& T, uint32_t i
   return hit;
 }
 
-// The packet's rays for the any-hit leaf, and per lane the single-ray any-hit kernel's constants
-// (mt_any_hit_ray): lo = mt_lower(tmin), hi = next_up(tmax)·(1 + 2^-20), tlimit = next_up(tmax).
-template <class V>
-struct MtPacketAnyRays {
-  RayLanes<V> r;
-  V lo, hi, tlimit;
-};
-
 // Slots [begin, end) against the lanes set in `lanes`: the lanes that hit one of them with
-// tmin <= t <= tmax and whose filter (filters: null or one per lane) accepts it. Per lane and
-// triangle exactly mt_any_hit_step's tests (the same numerators as mt_packet_closest's, the same
-// ordered depth bounds, the same exact t) behind the conservative sign pre-test, so a lane is
-// occluded here exactly when the single-ray kernel finds its ray occluded in the same range (outside
-// subnormal |det|, mt_packet_closest's caveat). A lane leaves the loop at its first hit.
+// tmin <= t <= tmax and whose filter (filters: null or one per lane) accepts it. `q`: the packet's
+// rays as lanes with, per lane, the single-ray kernel's constants (mt_any_hit_ray's lo, hi,
+// tlimit). Per lane and triangle the single-ray kernel's test, mt_any_hit_lanes, on the numerators
+// mt_packet_closest forms, behind the conservative sign pre-test, so a lane is occluded here exactly
+// when the single-ray kernel finds its ray occluded in the same range (outside subnormal |det|,
+// mt_packet_closest's caveat). A lane leaves the loop at its first hit.
 template <class V>
-unsigned mt_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end,
-                            const MtPacketAnyRays<V>& q, unsigned lanes, const HitFilter* filters) {
+unsigned mt_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, const MtAnyHitRay<V>& q,
+                            unsigned lanes, const HitFilter* filters) {
   const V neg_lo = V::broadcast(0.0f) - q.lo;
   unsigned found = 0;
   // the exact tests of one triangle that passed the pre-test
   auto step = [&](const MtNumerators<V>& c, uint32_t i) __attribute__((always_inline)) {
-    const typename V::Mask m =
-        mask_from_bits(V{}, lanes) & mt_edges(c) & (c.tn < q.hi * c.adet) & (c.tn >= q.lo * c.adet);
+    const typename V::Mask m = mt_any_hit_lanes<V>(c, mask_from_bits(V{}, lanes), q);
     if (!any(m)) return;
-    const V t = c.tn / c.adet;
-    const unsigned hit = packet_filter_accepts(T, i, bits(m & (t >= q.r.tmin) & (t < q.tlimit)), filters);
+    const unsigned hit = packet_filter_accepts(T, i, bits(m), filters);
     found |= hit;
     lanes &= ~hit;
   };

@@ -1,21 +1,23 @@
 // Packet traversal of a WideBvh for coherent rays (a 4×4 camera tile): P = 16 rays (one zmm on
-// AVX-512, two ymm on AVX2: pfloat), one per lane, walk the tree together with a mask of active lanes (Wald,
-// Slusallek, Benthin & Wagner 2001; with wide nodes as in Embree's hybrid traversal). Each child box is
-// tested against all active lanes at once; the children hit by any lane are visited front to back by the
-// entry distance of their lowest hit lane, and dropped on pop once every lane has a nearer hit than the entry
-// distance of their nearest lane. With the float `mt` or `watertight` table of this ISA a leaf is intersected
-// by a ray-packet kernel (packet_leaf.inl, watertight_packet_leaf.inl: one triangle against all lanes per
-// step, exactly the single-ray answer per lane); other intersectors, and `mt` packets mixing tmin = 0 with
-// tmin != 0, intersect a leaf ray by ray with the triangle kernel table (two lanes per call through the
-// table's pair kernel measured slower than one: packets 1.1x single rays instead of 1.5x). When only
-// kSingleRayLanes or fewer lanes remain active in a subtree, the packet has diverged: those lanes finish that
-// subtree by single-ray traversal (bvh_closest_from). Uniform forward packets first test every child of a
-// node against the hull of their lanes (PacketChildren below) and then only the children it passes lane by
-// lane. Box tests: packets whose lanes all have tmin >= 0 (camera rays) take the forward test (PK::Forward:
-// one FMA a slab, the widening folded into the reciprocals as in the single-ray forward test, and without
-// per-lane blends when all lanes share the direction signs); the others take the general test (PK::hits), as
-// single_ray_traversal.inl's tmin < 0 rays do. Included by the ISA units after single_ray_traversal.inl,
-// packet_leaf.inl and watertight_packet_leaf.inl (kThisIsa; pfloat: packet_lanes_<isa>.h).
+// AVX-512, two ymm on AVX2: pfloat), one per lane, walk the tree together with a mask of active
+// lanes (Wald, Slusallek, Benthin & Wagner 2001; with wide nodes as in Embree's hybrid traversal).
+// Each child box is tested against all active lanes at once; the children hit by any lane are
+// visited front to back by the entry distance of their lowest hit lane, and dropped on pop once
+// every lane has a nearer hit than the entry distance of their nearest lane. With the float `mt` or
+// `watertight` table of this ISA a leaf is intersected by a ray-packet kernel (packet_leaf.inl,
+// watertight_packet_leaf.inl: one triangle against all lanes per step, exactly the single-ray
+// answer per lane); other intersectors, and `mt` packets mixing tmin = 0 with tmin != 0, intersect
+// a leaf ray by ray with the triangle kernel table (two lanes per call through the table's pair
+// kernel measured slower than one: packets 1.1x single rays instead of 1.5x). When only
+// kSingleRayLanes or fewer lanes remain active in a subtree, the packet has diverged: those lanes
+// finish that subtree by single-ray traversal (bvh_closest_from). Uniform forward packets first
+// test every child of a node against the hull of their lanes (PacketChildren below) and then only
+// the children it passes lane by lane. Box tests: packets whose lanes all have tmin >= 0 (camera
+// rays) take the forward test (PK::Forward: one FMA a slab, the widening folded into the
+// reciprocals as in the single-ray forward test, and without per-lane blends when all lanes share
+// the direction signs); the others take the general test (PK::hits), as single_ray_traversal.inl's
+// tmin < 0 rays do. Included by the ISA units after single_ray_traversal.inl, packet_leaf.inl and
+// watertight_packet_leaf.inl (kThisIsa; pfloat: packet_lanes_<isa>.h).
 
 inline constexpr int kSingleRayLanes = 2;
 

@@ -427,15 +427,22 @@ RAYVEC_INLINE MtAnyHitRay<V> mt_any_hit_ray(const Ray& ray) {
 // pre-test as ordered compares — closed edges, lo·|det| <= t·|det| < hi·|det| (|det| = 0 fails:
 // t·|det| >= 0 and < 0 cannot both hold; NaN fails every compare) — then, for a step where a lane
 // passes, the exact tmin <= t < tlimit.
+// mt_any_hit_lanes: the lanes of `active` that hold a hit, before any filter — also the test of
+// the packet any-hit leaf (bvh/packet_leaf.inl), whose lanes are rays and `q` a packet's.
 template <class V>
-RAYVEC_INLINE bool mt_any_hit_step(const TriangleArrays& T, uint32_t i, MtNumerators<V> c,
+RAYVEC_INLINE typename V::Mask mt_any_hit_lanes(const MtNumerators<V>& c, typename V::Mask active,
+                                                const MtAnyHitRay<V>& q) {
+  const typename V::Mask m = active & mt_edges(c) & (c.tn < q.hi * c.adet) & (c.tn >= q.lo * c.adet);
+  if (!any(m)) return m;
+  const V t = c.tn / c.adet;
+  return m & (t >= q.r.tmin) & (t < q.tlimit);
+}
+
+template <class V>
+RAYVEC_INLINE bool mt_any_hit_step(const TriangleArrays& T, uint32_t i, const MtNumerators<V>& c,
                                    typename V::Mask active, const MtAnyHitRay<V>& q,
                                    const HitFilter* filter) {
-  c.mask = active & mt_edges(c) & (c.tn < q.hi * c.adet);
-  c.mask = c.mask & (c.tn >= q.lo * c.adet);
-  if (!any(c.mask)) return false;
-  const V t = c.tn / c.adet;
-  const typename V::Mask m = c.mask & (t >= q.r.tmin) & (t < q.tlimit);
+  const typename V::Mask m = mt_any_hit_lanes<V>(c, active, q);
   if (!any(m)) return false;
   if (!filter) return true;
   for (unsigned lanes = bits(m); lanes != 0; lanes &= lanes - 1)

@@ -37,6 +37,7 @@ void TileRenderer::render(const TileRect& rect, float* out) {
     costs_.assign(n, TraversalCost{});
     bounces_.assign(n, 0);
   }
+  // rays go by 4×4 blocks (a packet's rays closer together than a row's); pixel = block_order_[ray]
   block_order_.clear();
   const int h = n / w;
   for (int by = 0; by < h; by += 4)
@@ -47,25 +48,21 @@ void TileRenderer::render(const TileRect& rect, float* out) {
     const auto ta = std::chrono::steady_clock::now();
     batch_.resize(n);
     hits_.resize(n);
-    // traced by 4×4 blocks (a packet's rays closer together than a row's), shaded in pixel order
-    block_rays_.resize(n);
-    block_hits_.resize(n);
     for (int j = 0; j < n; ++j) {
       const int i = block_order_[j], x = rect.x0 + i % w, y = rect.y0 + i / w;
       const auto [sx, sy] = sample_position(x, y, s, spp);
-      block_rays_[j] = camera_.ray(float(x) + sx, float(y) + sy);
+      batch_[j] = camera_.ray(float(x) + sx, float(y) + sy);
     }
-    accel_.closest_stream(block_rays_.data(), block_hits_.data(), n);
-    for (int j = 0; j < n; ++j) {
-      batch_[block_order_[j]] = block_rays_[j];
-      hits_[block_order_[j]] = block_hits_[j];
-    }
+    accel_.closest_stream(batch_.data(), hits_.data(), n);
     rays.primary += uint64_t(n);
     const auto tb = std::chrono::steady_clock::now();
     primary_seconds += std::chrono::duration<double>(tb - ta).count();
-    for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const int i = block_order_[j];
+      const Ray& ray = batch_[j];
+      const Hit& h = hits_[j];
       if (counting_) pixel_cost_.reset();
-      sum_[i] += whitted_.shade(batch_[i], hits_[i], 0, 1.0f, rays);
+      sum_[i] += whitted_.shade(ray, h, 0, 1.0f, rays);
       if (counting_) {
         costs_[i] += pixel_cost_.cost;
         bounces_[i] = std::max(bounces_[i], pixel_cost_.bounces);
@@ -73,10 +70,9 @@ void TileRenderer::render(const TileRect& rect, float* out) {
       if (s != 0 || channels_ == 3) continue;
       // AOVs from the first sample.
       float* px = out + std::size_t(i) * channels_ + 3;
-      const Hit& h = hits_[i];
       SurfacePoint sp;
-      if (h.hit()) sp = surface_point(scene_, batch_[i], h);
-      if (settings_.aov.depth) *px++ = h.hit() ? h.t * dot(batch_[i].dir, camera_.forward()) : kInf;
+      if (h.hit()) sp = surface_point(scene_, ray, h);
+      if (settings_.aov.depth) *px++ = h.hit() ? h.t * dot(ray.dir, camera_.forward()) : kInf;
       if (settings_.aov.normal) {
         const Vec3f nrm = h.hit() ? sp.ns : Vec3f{};
         *px++ = nrm.x;

@@ -64,11 +64,9 @@ class TileRenderer {
   const bool counting_;
   PixelCost pixel_cost_;
   Whitted whitted_;
-  std::vector<Ray> batch_;  // pixel order
+  std::vector<int> block_order_;  // the tile's pixels by 4×4 blocks: the order of batch_ and hits_
+  std::vector<Ray> batch_;
   std::vector<Hit> hits_;
-  std::vector<int> block_order_;  // the pixels by 4×4 blocks
-  std::vector<Ray> block_rays_;
-  std::vector<Hit> block_hits_;
   std::vector<Vec3f> sum_;
   std::vector<TraversalCost> costs_;
   std::vector<int> bounces_;
