@@ -22,6 +22,9 @@ namespace {
 constexpr uint32_t kParallelBinning = 2048;        // ranges this large may bin in parallel chunks
 constexpr uint32_t kParallelPartition = 1u << 16;  // ... and partition in parallel chunks
 constexpr int kBinningChunks = 4;
+// ranges this large bin alternate primitives into kBinSets sets of bins (Builder::bin_range)
+constexpr uint32_t kInterleavedBinning = 256;
+constexpr int kBinSets = 4;
 // fewer triangles: build on the calling thread (a 1,000-triangle build takes ~0.3 ms, a parallel
 // region a few µs when the team's threads are awake)
 constexpr std::size_t kParallelBuild = 1024;
@@ -112,27 +115,41 @@ class Builder {
   // All three axes of a primitive at once in 4 lanes: centroid, bin (bin_of's arithmetic, lane by
   // lane, so the partition's scalar bin_of agrees), then one min and max per axis's bin. Lane 3
   // holds the id's bits in `lo` and is masked to 0 before any arithmetic (as a float an id is
-  // usually a denormal, slow to compute with); the bins' lane 3 is never read.
+  // usually a denormal, slow to compute with), so an occupied bin's lane 3 is 0 (SweepBox).
+  // Neighbouring primitives (a mesh's order, and a partition's) mostly fall in the same bins, so
+  // each bin's load-min-store waits on the previous primitive's store: large ranges bin alternate
+  // primitives into kBinSets sets of bins, merged at the end (min, max and sums are exact, so the
+  // bins are the same).
   void bin_range(uint32_t begin, uint32_t end, const Range& r, Bins& out) const {
     using sse::Float4;
-    out.clear(bins_);
     const Float4 rlo = Float4::set(r.lo[0], r.lo[1], r.lo[2], 0.0f);
     const Float4 rscale = Float4::set(r.scale[0], r.scale[1], r.scale[2], 0.0f);
     const Float4 half = Float4::broadcast(0.5f), zero = Float4::broadcast(0.0f);
     const Float4 last = Float4::broadcast(float(bins_ - 1));
-    for (uint32_t i = begin; i < end; ++i) {
-      const Prim& p = prims_[i];
-      const Float4 lo = Float4::load(p.lo), hi = Float4::load(p.hi);
-      const Float4 c = (lo.xyz() + hi) * half;
+    const auto add = [&](const Prim& p, Bins& to) {
+      const Float4 lo = Float4::load(p.lo).xyz(), hi = Float4::load(p.hi);
+      const Float4 c = (lo + hi) * half;
       int32_t k[4];
       vmin(vmax((c - rlo) * rscale, zero), last).store_truncated(k);
       for (int a = 0; a < 3; ++a) {
-        float* b = out.box[a][k[a]];
+        float* b = to.box[a][k[a]];
         vmin(lo, Float4::load(b)).store(b);
         vmax(hi, Float4::load(b + 4)).store(b + 4);
-        ++out.count[a][k[a]];
+        ++to.count[a][k[a]];
       }
+    };
+    out.clear(bins_);
+    uint32_t i = begin;
+    if (end - begin >= kInterleavedBinning) {
+      Bins more[kBinSets - 1];
+      for (Bins& m : more) m.clear(bins_);
+      for (; i + kBinSets <= end; i += kBinSets) {
+        add(prims_[i], out);
+        for (int s = 1; s < kBinSets; ++s) add(prims_[i + uint32_t(s)], more[s - 1]);
+      }
+      for (const Bins& m : more) out.grow(m, bins_);
     }
+    for (; i < end; ++i) add(prims_[i], out);
   }
 
   Split find_split(uint32_t begin, uint32_t end, const BBox& cbox, int depth) const {
@@ -175,16 +192,16 @@ class Builder {
       // right_*[j]: bins used[j, m)
       float right_area[kMaxBins];
       uint32_t right_count[kMaxBins];
-      BinBox acc;
+      SweepBox acc;
       for (int j = m - 1; j > 0; --j) {
-        acc.grow(bins.at(axis, used[j]));
+        acc.grow(bins, axis, used[j]);
         right_area[j] = acc.half_area();
         right_count[j] = acc.count;
       }
-      BinBox left;
+      SweepBox left;
       int best_j = -1;
       for (int j = 0; j + 1 < m; ++j) {  // both sides non-empty
-        left.grow(bins.at(axis, used[j]));
+        left.grow(bins, axis, used[j]);
         const float cost =
             left.half_area() * leaf_cost(left.count) + right_area[j + 1] * leaf_cost(right_count[j + 1]);
         if (cost < best.cost) {
@@ -424,12 +441,10 @@ class Builder {
     if (split.axis >= 0) {
       const int axis = split.axis;
       const float lo = cbox.lo[axis], scale = float(bins_) / cbox.extent()[axis];
-      const int bins = bins_, last_left = split.bin;
+      // bin_of(centroid) <= split.bin, as one comparison
+      const float threshold = right_threshold(lo, scale, bins_, split.bin);
       mid = partition_range(
-          begin, end, depth,
-          [axis, lo, scale, bins, last_left](const Prim& p) {
-            return bin_of(p.centroid(axis), lo, scale, bins) <= last_left;
-          },
+          begin, end, depth, [axis, threshold](const Prim& p) { return !(p.centroid(axis) >= threshold); },
           child_cbox, have_child_cbox);
       left_box = split.left;
       right_box = split.right;

@@ -2,6 +2,7 @@
 // axes over a range of primitives in 4-lane form, the chosen split, and the bin of a centroid.
 // Internal to the builder; the same arithmetic as its 4-lane binning, so both agree on every bin.
 #pragma once
+#include <bit>
 #include <cstdint>
 #include <limits>
 
@@ -76,6 +77,21 @@ struct Bins {
   }
 };
 
+// A box grown bin by bin in the SAH sweeps, in the bins' 4-lane form, and the primitives in those
+// bins: the same bounds and areas as BinBox's, a bin in two operations. Lane 3 is 0 in every
+// occupied bin (the binning masks the ids out), so the area's arithmetic never meets a denormal.
+struct SweepBox {
+  sse::Float4 lo = sse::Float4::broadcast(kInf), hi = sse::Float4::broadcast(-kInf);
+  uint32_t count = 0;
+  void grow(const Bins& bins, int axis, int k) {
+    const float* b = bins.box[axis][k];
+    lo = sse::vmin(sse::Float4::load(b), lo);
+    hi = sse::vmax(sse::Float4::load(b + 4), hi);
+    count += bins.count[axis][k];
+  }
+  float half_area() const { return sse::half_area(lo, hi); }
+};
+
 struct Split {
   int axis = -1;
   int bin = 0;  // primitives in bins [0, bin] go left
@@ -91,6 +107,33 @@ inline int bin_of(float c, float lo, float scale, int bins) {
   f = f > 0.0f ? f : 0.0f;
   const float last = float(bins - 1);
   return int(f < last ? f : last);
+}
+
+// The floats in increasing order as unsigned integers: −NaN < −inf < … < −0 < +0 < … < +inf < +NaN.
+inline uint32_t float_rank(float f) {
+  const uint32_t b = std::bit_cast<uint32_t>(f);
+  return (b & 0x80000000u) != 0 ? ~b : b | 0x80000000u;
+}
+inline float float_of_rank(uint32_t r) {
+  return std::bit_cast<float>((r & 0x80000000u) != 0 ? r & 0x7fffffffu : ~r);
+}
+
+// The least centroid coordinate whose bin_of is past `last_left`, so that for every c
+//   bin_of(c, lo, scale, bins) <= last_left  ⇔  !(c >= right_threshold(lo, scale, bins, last_left))
+// (NaN included: bin 0, and no comparison with NaN holds); NaN when no bin is past it. bin_of is
+// non-decreasing in c (a subtraction, a multiplication by scale >= 0, a clamp and a truncation all
+// are), so a search over the floats in order finds it; the partition then tests one comparison a
+// primitive instead of the bin arithmetic.
+inline float right_threshold(float lo, float scale, int bins, int last_left) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  if (bin_of(inf, lo, scale, bins) <= last_left) return std::numeric_limits<float>::quiet_NaN();
+  if (bin_of(-inf, lo, scale, bins) > last_left) return -inf;
+  uint32_t left = float_rank(-inf), right = float_rank(inf);  // bins: <= last_left, > last_left
+  while (right - left > 1) {
+    const uint32_t mid = left + (right - left) / 2;
+    (bin_of(float_of_rank(mid), lo, scale, bins) <= last_left ? left : right) = mid;
+  }
+  return float_of_rank(right);
 }
 
 }  // namespace rayvec::sah_bins

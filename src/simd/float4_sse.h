@@ -39,6 +39,15 @@ RAYVEC_INLINE Float4 operator*(Float4 a, Float4 b) { return {_mm_mul_ps(a.v, b.v
 // is b — pass the accumulator as b to keep it when the new value is NaN.
 RAYVEC_INLINE Float4 vmin(Float4 a, Float4 b) { return {_mm_min_ps(a.v, b.v)}; }
 RAYVEC_INLINE Float4 vmax(Float4 a, Float4 b) { return {_mm_max_ps(a.v, b.v)}; }
+// Half the surface area of the box lo..hi in lanes 0-2: x·y + y·z + z·x of its extent, in that
+// order (BBox::half_area's arithmetic, so the same bits), 0 when it is empty along any axis.
+RAYVEC_INLINE float half_area(Float4 lo, Float4 hi) {
+  if ((_mm_movemask_ps(_mm_cmple_ps(lo.v, hi.v)) & 7) != 7) return 0.0f;
+  const __m128 e = _mm_sub_ps(hi.v, lo.v);
+  const __m128 p = _mm_mul_ps(e, _mm_shuffle_ps(e, e, _MM_SHUFFLE(3, 0, 2, 1)));  // x·y, y·z, z·x
+  const __m128 xy_yz = _mm_add_ss(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 3, 3, 1)));
+  return _mm_cvtss_f32(_mm_add_ss(xy_yz, _mm_movehl_ps(p, p)));
+}
 
 #else
 
@@ -77,6 +86,11 @@ RAYVEC_INLINE Float4 vmin(Float4 a, Float4 b) {
 }
 RAYVEC_INLINE Float4 vmax(Float4 a, Float4 b) {
   return lanewise(a, b, [](float x, float y) { return x > y ? x : y; });
+}
+RAYVEC_INLINE float half_area(Float4 lo, Float4 hi) {
+  if (!(lo.v[0] <= hi.v[0] && lo.v[1] <= hi.v[1] && lo.v[2] <= hi.v[2])) return 0.0f;
+  const float x = hi.v[0] - lo.v[0], y = hi.v[1] - lo.v[1], z = hi.v[2] - lo.v[2];
+  return x * y + y * z + z * x;
 }
 
 #endif
