@@ -78,11 +78,6 @@ class Builder {
     // more than the parallel parts of the build it preceded); run() copies out the used prefix
     if (n > 0)
       nodes_.reset(static_cast<BinaryNode*>(::operator new(sizeof(BinaryNode) * (2 * capacity - 1))));
-    // uninitialized (no serial zeroing): the partitions of the large ranges go through it
-    if (n >= kParallelPartition) {
-      scratch_buffer_ = allocate_large_buffer(sizeof(Prim) * capacity);
-      scratch_ = static_cast<Prim*>(scratch_buffer_.get());
-    }
   }
 
   void run() {
@@ -265,65 +260,94 @@ class Builder {
     return b.box();
   }
 
-  // Moves the primitives of [begin, end) for which goes_left(p) holds before the others and
-  // returns the first of the others. Chunked ranges (see chunked()): a stable two-pass partition
-  // in chunks as tasks (count, then scatter through scratch_ and copy back) — the root's partition
-  // was the largest serial step of the build; other ranges keep the in-place std::partition, which
-  // moves less memory. The order inside each side does not matter: every later decision depends
-  // only on the set of primitives in a range.
-  // Serial ranges also return the centroid bounds of both sides in `cbox` (the children's binning
-  // needs them, and the partition visits every centroid anyway); chunked ranges leave `cbox` empty
-  // and report false in `have_cbox`.
+  // Moves the primitives of [begin, end) for which goes_left(p) holds before the others, returns
+  // the first of the others and the centroid bounds of both sides in `cbox` (the children's binning
+  // needs them, and the partition visits every centroid anyway). Chunked ranges (see chunked()):
+  // each chunk is partitioned in place as a task, then the right primitives before the split point
+  // trade places with the left ones after it, in pieces as tasks — the root's partition was the
+  // largest serial step of the build, and a second buffer to partition through would cost 32 bytes
+  // a triangle of fresh memory. The order inside each side does not matter: every later decision
+  // depends only on the set of primitives in a range.
   template <class F>
-  uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left, BBox (&cbox)[2],
-                           bool& have_cbox) {
-    Prim* data = prims_;
-    have_cbox = !chunked(end - begin, depth, kParallelPartition) || !scratch_;
-    if (have_cbox) return partition_serial(begin, end, goes_left, cbox);
+  uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left, BBox (&cbox)[2]) {
+    if (!chunked(end - begin, depth, kParallelPartition))
+      return partition_serial(begin, end, goes_left, cbox);
     constexpr int C = kBinningChunks;
     const uint32_t step = (end - begin + C - 1) / C;
-    uint32_t lefts[C] = {};
-    const F* pred = &goes_left;
+    uint32_t first[C + 1], mid[C];
+    BBox sides[C][2];
+    for (int c = 0; c <= C; ++c) first[c] = std::min(end, begin + uint32_t(c) * step);
     for (int c = 0; c < C; ++c) {
-      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
-#pragma omp task shared(lefts) firstprivate(cb, ce, c, pred, data)
+#pragma omp task shared(first, mid, sides, goes_left) firstprivate(c)
+      mid[c] = partition_serial(first[c], first[c + 1], goes_left, sides[c]);
+    }
+#pragma omp taskwait
+    uint32_t split = begin;
+    for (int c = 0; c < C; ++c) split += mid[c] - first[c];
+    // the misplaced primitives, as runs in order: right ones before `split`, left ones after it
+    // (as many of each)
+    Runs right_before, left_after;
+    for (int c = 0; c < C; ++c) {
+      right_before.add(mid[c], std::min(first[c + 1], split));
+      left_after.add(std::max(first[c], split), mid[c]);
+    }
+    const uint32_t misplaced = right_before.size();
+    for (int t = 0; t < C; ++t) {
+      const auto k0 = uint32_t(uint64_t(misplaced) * uint32_t(t) / C);
+      const auto k1 = uint32_t(uint64_t(misplaced) * uint32_t(t + 1) / C);
+#pragma omp task shared(right_before, left_after) firstprivate(k0, k1)
       {
-        uint32_t k = 0;
-        for (uint32_t i = cb; i < ce; ++i) k += (*pred)(data[i]) ? 1u : 0u;
-        lefts[c] = k;
+        Runs::Cursor a = right_before.at(k0), b = left_after.at(k0);
+        for (uint32_t k = k0; k < k1; ++k) std::swap(prims_[a.next()], prims_[b.next()]);
       }
     }
 #pragma omp taskwait
-    uint32_t left_at[C], right_at[C];
-    uint32_t total_left = 0;
-    for (int c = 0; c < C; ++c) total_left += lefts[c];
-    uint32_t l = begin, r = begin + total_left;
-    for (int c = 0; c < C; ++c) {
-      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
-      left_at[c] = l;
-      right_at[c] = r;
-      l += lefts[c];
-      r += (ce > cb ? ce - cb : 0) - lefts[c];
+    for (int side = 0; side < 2; ++side) {
+      BinBox box;
+      for (int c = 0; c < C; ++c)
+        for (int a = 0; a < 3; ++a) {
+          box.lo[a] = min_keep(box.lo[a], sides[c][side].lo[a]);
+          box.hi[a] = max_keep(box.hi[a], sides[c][side].hi[a]);
+        }
+      cbox[side] = box.box();
     }
-    Prim* scratch = scratch_;
-    for (int c = 0; c < C; ++c) {
-      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
-      const uint32_t l0 = left_at[c], r0 = right_at[c];
-#pragma omp task firstprivate(cb, ce, l0, r0, pred, data, scratch)
-      {
-        uint32_t li = l0, ri = r0;
-        for (uint32_t i = cb; i < ce; ++i) scratch[(*pred)(data[i]) ? li++ : ri++] = data[i];
-      }
-    }
-#pragma omp taskwait
-    for (int c = 0; c < C; ++c) {
-      const uint32_t cb = begin + uint32_t(c) * step, ce = std::min(end, cb + step);
-#pragma omp task firstprivate(cb, ce, data, scratch)
-      std::copy(scratch + cb, scratch + ce, data + cb);
-    }
-#pragma omp taskwait
-    return begin + total_left;
+    return split;
   }
+
+  // At most kBinningChunks runs [begin, end) of primitive positions, read as one sequence.
+  struct Runs {
+    uint32_t begin[kBinningChunks], end[kBinningChunks];
+    int count = 0;
+    void add(uint32_t b, uint32_t e) {
+      if (b >= e) return;
+      begin[count] = b;
+      end[count++] = e;
+    }
+    uint32_t size() const {
+      uint32_t n = 0;
+      for (int r = 0; r < count; ++r) n += end[r] - begin[r];
+      return n;
+    }
+    // Walks the positions from the k-th on.
+    struct Cursor {
+      const Runs* runs;
+      int r;
+      uint32_t at;
+      uint32_t next() {
+        while (at == runs->end[r]) at = runs->begin[++r];
+        return at++;
+      }
+    };
+    Cursor at(uint32_t k) const {
+      int r = 0;
+      while (r < count && k >= end[r] - begin[r]) {
+        k -= end[r] - begin[r];
+        ++r;
+      }
+      // k == size(): a cursor that is never read
+      return r < count ? Cursor{this, r, begin[r] + k} : Cursor{this, 0, 0};
+    }
+  };
 
   // Each primitive is tested once: [begin, i) goes left, [j, end) goes right, and [i, j) is not yet
   // tested. The centroid bounds of both sides grow on the way (x86 min/max with the accumulator
@@ -445,7 +469,8 @@ class Builder {
       const float threshold = right_threshold(lo, scale, bins_, split.bin);
       mid = partition_range(
           begin, end, depth, [axis, threshold](const Prim& p) { return !(p.centroid(axis) >= threshold); },
-          child_cbox, have_child_cbox);
+          child_cbox);
+      have_child_cbox = true;
       left_box = split.left;
       right_box = split.right;
     } else if (n <= config_.max_leaf) {
@@ -513,14 +538,12 @@ class Builder {
                               ? std::countr_zero(config_.leaf_block)
                               : -1;
   BinaryBvh& out_;
-  // primitive records and the partition buffer (ranges of kParallelPartition or more): LargeBuffers,
-  // uninitialized; the constructor's parallel loop writes every record
-  LargeBuffer prims_buffer_, scratch_buffer_;
+  // primitive records: a LargeBuffer, uninitialized; the constructor's parallel loop writes every one
+  LargeBuffer prims_buffer_;
   Prim* prims_ = nullptr;
   std::size_t count_ = 0, capacity_ = 0;
   float root_area_ = 0;
   SpatialSplitter splitter_;
-  Prim* scratch_ = nullptr;
   struct OperatorDelete {
     void operator()(BinaryNode* p) const { ::operator delete(p); }
   };
