@@ -53,7 +53,7 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
   s.entering = dot(s.ng, ray.dir) < 0;
   if (!s.entering) s.ng = -s.ng;
   s.ns = s.ng;
-  if (const auto* corners = scene.normals(t)) {
+  if (const auto corners = scene.normals(t)) {
     const auto& n = *corners;
     const float w = 1.0f - hit.u - hit.v;
     const Vec3f ns = n[0] * w + n[1] * hit.u + n[2] * hit.v;
@@ -62,7 +62,7 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
       if (dot(s.ns, s.ng) < 0) s.ns = -s.ns;
     }
   }
-  if (const auto* corners = scene.uv(t)) {
+  if (const auto corners = scene.uv(t)) {
     const auto& uv = *corners;
     const float w = 1.0f - hit.u - hit.v;
     s.u = uv[0][0] * w + uv[1][0] * hit.u + uv[2][0] * hit.v;

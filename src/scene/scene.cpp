@@ -74,26 +74,28 @@ void Scene::add_triangle(Vec3f a, Vec3f b, Vec3f c, int32_t material) {
   mesh.add_triangle(a, b, c);
   triangle_material.push_back(material);
   triangle_object.push_back(static_cast<int32_t>(object_count_));
-  normals_of.push_back(kNoCorners);
-  uv_of.push_back(kNoCorners);
 }
 
+namespace {
+
+// Slot t of per-triangle corner indices, the triangles before it without any.
+std::array<uint32_t, 3>& corner_slot(std::vector<std::array<uint32_t, 3>>& corners, std::size_t t) {
+  if (corners.size() <= t) corners.resize(t + 1, {Scene::kNoCorners, Scene::kNoCorners, Scene::kNoCorners});
+  return corners[t];
+}
+
+}  // namespace
+
 void Scene::set_normals(std::size_t t, const std::array<Vec3f, 3>& normals) {
-  if (normals_of[t] == kNoCorners) {
-    normals_of[t] = static_cast<uint32_t>(corner_normals.size());
-    corner_normals.push_back(normals);
-  } else {
-    corner_normals[normals_of[t]] = normals;
-  }
+  const auto first = static_cast<uint32_t>(normal_table.size());
+  normal_table.insert(normal_table.end(), normals.begin(), normals.end());
+  corner_slot(normal_corners, t) = {first, first + 1, first + 2};
 }
 
 void Scene::set_uv(std::size_t t, const std::array<std::array<float, 2>, 3>& uv) {
-  if (uv_of[t] == kNoCorners) {
-    uv_of[t] = static_cast<uint32_t>(corner_uv.size());
-    corner_uv.push_back(uv);
-  } else {
-    corner_uv[uv_of[t]] = uv;
-  }
+  const auto first = static_cast<uint32_t>(uv_table.size());
+  uv_table.insert(uv_table.end(), uv.begin(), uv.end());
+  corner_slot(uv_corners, t) = {first, first + 1, first + 2};
 }
 
 void Scene::add_object(const ObjModel& model, const Transform& transform, const MaterialOverride& override,
@@ -128,11 +130,19 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
   make_room(mesh.triangles, tris);
   make_room(triangle_material, tris);
   make_room(triangle_object, tris);
-  make_room(normals_of, tris);
-  make_room(uv_of, tris);
-  if (!model.normals.empty())
-    make_room(corner_normals, corner_normals.size() + model.triangle_normals.size());
-  if (!model.texcoords.empty()) make_room(corner_uv, corner_uv.size() + model.triangle_texcoords.size());
+  // the OBJ's normals and texture coordinates (normals transformed) join the tables as they are;
+  // the triangles index them
+  const auto first_normal = static_cast<uint32_t>(normal_table.size());
+  const auto first_uv = static_cast<uint32_t>(uv_table.size());
+  if (!model.triangle_normals.empty()) {
+    make_room(normal_table, normal_table.size() + model.normals.size());
+    for (const Vec3f& n : model.normals) normal_table.push_back(map.normal(n));
+    make_room(normal_corners, first_tri + model.triangle_normals.size());
+  }
+  if (!model.triangle_texcoords.empty()) {
+    uv_table.insert(uv_table.end(), model.texcoords.begin(), model.texcoords.end());
+    make_room(uv_corners, first_tri + model.triangle_texcoords.size());
+  }
   constexpr uint32_t kUnplaced = 0xffffffffu;
   std::vector<uint32_t> placed(model.mesh.positions.size(), kUnplaced);
   const auto vertex = [&](uint32_t i) {
@@ -144,8 +154,6 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
     }
     return placed[i];
   };
-  std::vector<Vec3f> normals(model.normals.size());  // each transformed once
-  for (std::size_t i = 0; i < normals.size(); ++i) normals[i] = map.normal(model.normals[i]);
   // A mirroring transform reverses winding; swap two corners so normals stay outward.
   const int c1 = map.flips_orientation() ? 2 : 1, c2 = map.flips_orientation() ? 1 : 2;
   const int corner[3] = {0, c1, c2};
@@ -166,24 +174,20 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
     mesh.triangles.push_back({a, b, c});
     triangle_material.push_back(material);
     triangle_object.push_back(static_cast<int32_t>(object_count_));
-    normals_of.push_back(kNoCorners);
-    uv_of.push_back(kNoCorners);
     const std::size_t tri = first_tri + t;
     if (t < model.triangle_normals.size()) {
       const auto& idx = model.triangle_normals[t];
-      if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0) {
-        std::array<Vec3f, 3> n;
-        for (int k = 0; k < 3; ++k) n[k] = normals[idx[corner[k]]];
-        set_normals(tri, n);
-      }
+      if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0)
+        corner_slot(normal_corners, tri) = {first_normal + uint32_t(idx[corner[0]]),
+                                            first_normal + uint32_t(idx[corner[1]]),
+                                            first_normal + uint32_t(idx[corner[2]])};
     }
     if (t < model.triangle_texcoords.size()) {
       const auto& idx = model.triangle_texcoords[t];
-      if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0) {
-        std::array<std::array<float, 2>, 3> uv;
-        for (int k = 0; k < 3; ++k) uv[k] = model.texcoords[idx[corner[k]]];
-        set_uv(tri, uv);
-      }
+      if (idx[0] >= 0 && idx[1] >= 0 && idx[2] >= 0)
+        corner_slot(uv_corners, tri) = {first_uv + uint32_t(idx[corner[0]]),
+                                        first_uv + uint32_t(idx[corner[1]]),
+                                        first_uv + uint32_t(idx[corner[2]])};
     }
   }
   warnings.insert(warnings.end(), model.warnings.begin(), model.warnings.end());

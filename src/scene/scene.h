@@ -65,14 +65,16 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<int32_t> material_texture;  // per material, index into textures or -1
   std::vector<Texture> textures;          // linear RGB (map_Kd)
-  // Corner attributes where the OBJ gives them: triangle t's vertex normals are
-  // corner_normals[normals_of[t]] and its texture coordinates corner_uv[uv_of[t]], kNoCorners
-  // where it gives none (normals() and uv() read them). Most meshes give neither, and a slot of
-  // zeros per triangle cost a million-triangle scene 60 MB to allocate and clear.
+  // Corner attributes where the OBJ gives them, by index as the OBJ gives them: triangle t's
+  // vertex normals are normal_table[normal_corners[t][k]] (k = 0, 1, 2) and its texture coordinates
+  // uv_table[uv_corners[t][k]]; a triangle past the end of normal_corners (uv_corners), or whose
+  // first index is kNoCorners, has none (normals() and uv() read them). Most meshes give neither and
+  // pay nothing; a mesh with a normal at every vertex pays 12 bytes a triangle for the indices and 12
+  // a normal (about 6 a triangle), where the three normals copied into every triangle cost 36.
   static constexpr uint32_t kNoCorners = 0xffffffffu;
-  std::vector<uint32_t> normals_of, uv_of;
-  std::vector<std::array<Vec3f, 3>> corner_normals;
-  std::vector<std::array<std::array<float, 2>, 3>> corner_uv;
+  std::vector<std::array<uint32_t, 3>> normal_corners, uv_corners;
+  std::vector<Vec3f> normal_table;
+  std::vector<std::array<float, 2>> uv_table;
   std::vector<std::string> warnings;
   // The camera and lights are rayvec's defaults (default_view.h), not the file's: a bare OBJ, or a
   // scene JSON without "camera" (default_camera) or without "lights" (default_light).
@@ -91,12 +93,16 @@ struct Scene {
   // Gives triangle t vertex normals / texture coordinates (corners in the triangle's order).
   void set_normals(std::size_t t, const std::array<Vec3f, 3>& normals);
   void set_uv(std::size_t t, const std::array<std::array<float, 2>, 3>& uv);
-  // Triangle t's vertex normals / texture coordinates, or null where it has none.
-  const std::array<Vec3f, 3>* normals(std::size_t t) const {
-    return normals_of[t] == kNoCorners ? nullptr : &corner_normals[normals_of[t]];
+  // Triangle t's vertex normals / texture coordinates (corners in the triangle's order), or none.
+  std::optional<std::array<Vec3f, 3>> normals(std::size_t t) const {
+    if (t >= normal_corners.size() || normal_corners[t][0] == kNoCorners) return std::nullopt;
+    const auto& k = normal_corners[t];
+    return std::array<Vec3f, 3>{normal_table[k[0]], normal_table[k[1]], normal_table[k[2]]};
   }
-  const std::array<std::array<float, 2>, 3>* uv(std::size_t t) const {
-    return uv_of[t] == kNoCorners ? nullptr : &corner_uv[uv_of[t]];
+  std::optional<std::array<std::array<float, 2>, 3>> uv(std::size_t t) const {
+    if (t >= uv_corners.size() || uv_corners[t][0] == kNoCorners) return std::nullopt;
+    const auto& k = uv_corners[t];
+    return std::array<std::array<float, 2>, 3>{uv_table[k[0]], uv_table[k[1]], uv_table[k[2]]};
   }
   int32_t add_material(const Material& m);
 

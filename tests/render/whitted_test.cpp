@@ -158,10 +158,10 @@ TEST(Whitted, IndexMatchedGlassTransmitsTheBackgroundFilteredByTf) {
   s.mesh = {};
   s.triangle_material.clear();
   s.triangle_object.clear();
-  s.normals_of.clear();
-  s.uv_of.clear();
-  s.corner_normals.clear();
-  s.corner_uv.clear();
+  s.normal_corners.clear();
+  s.uv_corners.clear();
+  s.normal_table.clear();
+  s.uv_table.clear();
   Material glass;
   glass.illum = 6;
   glass.Kd = {0, 0, 0};

@@ -1,5 +1,6 @@
 // Scene::add_object: a model's shared vertices stay shared (each used vertex transformed and stored
-// once, unused ones left out), mirrors swap two corners, and later objects index their own vertices.
+// once, unused ones left out), mirrors swap two corners, and later objects index their own vertices
+// and their own normals and texture coordinates.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -102,12 +103,40 @@ TEST(SceneObject, CornerNormalsAreTheTransformedNormals) {
   const AffineMap map(t);
   Scene scene;
   scene.add_object(model, t);
-  ASSERT_NE(scene.normals(0), nullptr);
-  EXPECT_EQ(scene.normals(1), nullptr);
-  const auto& n = *scene.normals(0);
+  ASSERT_TRUE(scene.normals(0).has_value());
+  EXPECT_FALSE(scene.normals(1).has_value());
+  const std::array<Vec3f, 3> n = *scene.normals(0);
   EXPECT_EQ(n[0], map.normal(model.normals[0]));
   EXPECT_EQ(n[1], map.normal(model.normals[0]));  // corners 1 and 2 swapped by the mirror
   EXPECT_EQ(n[2], map.normal(model.normals[1]));
+}
+
+TEST(SceneObject, CornerAttributesIndexEachObjectsOwnTables) {
+  Scene scene;
+  scene.add_object(quad(), Transform{});  // neither normals nor texture coordinates
+  EXPECT_TRUE(scene.normal_corners.empty()) << "a mesh without normals pays nothing for them";
+  EXPECT_TRUE(scene.uv_corners.empty());
+  ObjModel model = quad();
+  model.normals = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  model.triangle_normals = {{-1, -1, -1}, {2, 1, 0}};
+  model.texcoords = {{0.25f, 0.5f}, {0.75f, 1.0f}};
+  model.triangle_texcoords = {{1, 0, 1}};
+  scene.add_object(model, Transform{});
+  ASSERT_EQ(scene.mesh.size(), 4u);
+  for (std::size_t t = 0; t < 3; ++t) EXPECT_FALSE(scene.normals(t).has_value()) << "triangle " << t;
+  ASSERT_TRUE(scene.normals(3).has_value());
+  EXPECT_EQ((*scene.normals(3))[0], (Vec3f{0, 0, 1}));
+  EXPECT_EQ((*scene.normals(3))[1], (Vec3f{0, 1, 0}));
+  EXPECT_EQ((*scene.normals(3))[2], (Vec3f{1, 0, 0}));
+  EXPECT_FALSE(scene.uv(0).has_value());
+  ASSERT_TRUE(scene.uv(2).has_value());
+  EXPECT_EQ((*scene.uv(2))[0], (std::array<float, 2>{0.75f, 1.0f}));
+  EXPECT_EQ((*scene.uv(2))[1], (std::array<float, 2>{0.25f, 0.5f}));
+  EXPECT_FALSE(scene.uv(3).has_value()) << "past the triangles the OBJ gave coordinates";
+  scene.set_uv(0, {{{1, 2}, {3, 4}, {5, 6}}});  // a scene built in code
+  ASSERT_TRUE(scene.uv(0).has_value());
+  EXPECT_EQ((*scene.uv(0))[2], (std::array<float, 2>{5, 6}));
+  EXPECT_EQ((*scene.uv(2))[0], (std::array<float, 2>{0.75f, 1.0f})) << "the others keep theirs";
 }
 
 }  // namespace
