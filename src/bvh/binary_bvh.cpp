@@ -100,8 +100,9 @@ class Builder {
 
   // Whether a range of n primitives at this depth is worked on in chunks as tasks: only while the
   // tree has fewer ranges at this depth than threads (2^depth < threads). Below that the subtrees
-  // alone keep every thread busy, and chunking costs more than it gains (the two-pass partition
-  // moves the range twice; the chunked binning merges 4 sets of bins). `threshold`: kParallelBinning
+  // alone keep every thread busy, and chunking costs more than it gains (the chunked partition
+  // swaps the misplaced primitives after partitioning the chunks; the chunked binning merges 4
+  // sets of bins). `threshold`: kParallelBinning
   // for the binning and the bounds, kParallelPartition for the partition.
   bool chunked(uint32_t n, int depth, uint32_t threshold = kParallelBinning) const {
     return n >= threshold && depth < 30 && (1 << depth) < threads_;

@@ -145,14 +145,11 @@ SpatialSplit SpatialSplitter::find(const BuildPrim* refs, uint32_t n, const BBox
       // the reference's box cut at the bin planes (the triangle itself is clipped only by
       // partition(): clipping at every plane here made the search most of the build's time)
       for (int k = first; k <= last; ++k) {
-        alignas(16) float l[4], h[4];
-        lo.store(l);
-        hi.store(h);
-        if (k > first) l[a] = plane[a][k];
-        if (k < last) h[a] = plane[a][k + 1];
+        const Float4 l = k > first ? lo.with_lane(a, plane[a][k]) : lo;
+        const Float4 h = k < last ? hi.with_lane(a, plane[a][k + 1]) : hi;
         Bin& b = bin[a][k];
-        vmin(Float4::load(l), Float4::load(b.lo)).store(b.lo);
-        vmax(Float4::load(h), Float4::load(b.hi)).store(b.hi);
+        vmin(l, Float4::load(b.lo)).store(b.lo);
+        vmax(h, Float4::load(b.hi)).store(b.hi);
       }
     }
   }

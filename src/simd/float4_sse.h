@@ -26,6 +26,14 @@ struct Float4 {
   RAYVEC_INLINE Float4 xyz() const {
     return {_mm_and_ps(v, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)))};
   }
+  // This value with lane `lane` (0-3) replaced by x, in registers: a lane written to memory and the
+  // vector loaded back stalls on the failed store forwarding.
+  RAYVEC_INLINE Float4 with_lane(int lane, float x) const {
+    alignas(16) static constexpr int32_t kLaneMask[4][4] = {
+        {-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, -1, 0}, {0, 0, 0, -1}};
+    const __m128 m = _mm_load_ps(reinterpret_cast<const float*>(kLaneMask[lane]));
+    return {_mm_or_ps(_mm_andnot_ps(m, v), _mm_and_ps(m, _mm_set1_ps(x)))};
+  }
   // Truncation toward zero of each lane (lanes out of the int32 range give INT32_MIN).
   RAYVEC_INLINE void store_truncated(int32_t* p) const {
     _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm_cvttps_epi32(v));
@@ -60,6 +68,11 @@ struct Float4 {
     for (int i = 0; i < 4; ++i) p[i] = v[i];
   }
   RAYVEC_INLINE Float4 xyz() const { return {{v[0], v[1], v[2], 0.0f}}; }
+  RAYVEC_INLINE Float4 with_lane(int lane, float x) const {
+    Float4 r = *this;
+    r.v[lane] = x;
+    return r;
+  }
   RAYVEC_INLINE void store_truncated(int32_t* p) const {
     for (int i = 0; i < 4; ++i)
       p[i] = v[i] > -2147483648.0f && v[i] < 2147483648.0f ? int32_t(v[i]) : INT32_MIN;

@@ -1,7 +1,7 @@
 // The binned builder's shortcuts give its plain arithmetic's answers: the partition's one comparison
 // against right_threshold sends every centroid where bin_of sends it (NaN, infinities, signed zeros,
 // denormals and the floats next to every bin boundary included), and the sweeps' 4-lane area is
-// BBox::half_area bit for bit.
+// BBox::half_area bit for bit; Float4::with_lane, which the spatial-split search's clipped boxes use.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -92,6 +92,18 @@ TEST(SahBins, SweepAreaIsBBoxHalfAreaBitForBit) {
     ASSERT_EQ(std::bit_cast<uint32_t>(got), std::bit_cast<uint32_t>(expected))
         << "lo " << b.lo.x << "," << b.lo.y << "," << b.lo.z << " hi " << b.hi.x << "," << b.hi.y << ","
         << b.hi.z;
+  }
+}
+
+TEST(SahBins, WithLaneReplacesOneLaneOnly) {  // the spatial-split search's clipped reference boxes
+  const sse::Float4 v = sse::Float4::set(1.0f, -2.0f, kNaN, -0.0f);
+  for (int lane = 0; lane < 4; ++lane) {
+    alignas(16) float got[4], was[4];
+    v.with_lane(lane, 7.5f).store(got);
+    v.store(was);
+    for (int k = 0; k < 4; ++k)
+      EXPECT_EQ(std::bit_cast<uint32_t>(got[k]), std::bit_cast<uint32_t>(k == lane ? 7.5f : was[k]))
+          << "lane " << lane << ", element " << k;
   }
 }
 
