@@ -35,7 +35,8 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ASSIMP = "/usr/share/assimp/models/OBJ"
-SETS = ("primary", "primary_packet", "shadow", "incoherent")
+SETS = ("primary", "primary_packet", "shadow", "shadow_packet", "incoherent")
+SET_NAMES = "primary / packets / shadow / shadow packets / incoherent"
 SECTIONS = ("startup", "brute", "obj", "embree", "povray")
 
 
@@ -219,13 +220,13 @@ class Targets:
             label = "AVX2 against Embree at `max_isa=avx2`" if isa == "avx2" else "AVX-512 against Embree"
             self.row(f"{label}, every set", "≥ 1.0×", f"lowest {worst:.2f}×", worst >= 1.0)
             self.details.append(f"`bench rays --vs-embree --threads 1 --isa {isa}`, median ratio of {self.rounds} "
-                                f"alternating rounds, primary / packets / shadow / incoherent: " + "; ".join(cells) + ".")
+                                f"alternating rounds, {SET_NAMES}: " + "; ".join(cells) + ".")
             default, stored = runs[(isa, meshes[-1])], runs[(isa, "stored")]
             rel = {k: median([to_embree(b, k) / to_embree(a, k) for a, b in zip(default, stored)]) for k in SETS}
             self.details.append(
                 f"1M sphere, `--isa {isa}`: `--stored-normals 1` relative to the default (normals "
                 f"{'stored' if default[0].get('stored_normals') else 'formed per step'}), median of the per-round "
-                f"ratios, primary / packets / shadow / incoherent: " + " / ".join(f"{rel[k]:.3f}" for k in SETS) +
+                f"ratios, {SET_NAMES}: " + " / ".join(f"{rel[k]:.3f}" for k in SETS) +
                 " (docs/benchmarks.md#decision-normal-budget).")
         regr = f"{ASSIMP}/regr01.obj"
         if os.path.exists(regr):
