@@ -4,6 +4,8 @@
 // the caller commits through AtomicFile.
 #include "image/exr_file.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <exception>
 #include <mutex>
@@ -36,7 +38,7 @@ Module load() {
   const auto entry = reinterpret_cast<RayvecExrModuleFn>(plugin_symbol(p, "rayvec_exr_module"));
   const RayvecExrModule* table = entry ? entry() : nullptr;
   if (!table || table->abi != kRayvecExrAbi || !table->open || !table->channel || !table->read_rows ||
-      !table->close || !table->encode)
+      !table->close || !table->encode || !table->set_threads)
     m.error = p.path + " is not a rayvec " + RAYVEC_VERSION + " EXR module (rebuild rayvec)";
   else
     m.table = table;
@@ -46,10 +48,12 @@ Module load() {
 std::once_flag loaded_once;
 Module* loaded = nullptr;
 
+// The module, its line blocks (de)compressed on as many threads as the command may use.
 const RayvecExrModule& module(const std::string& what) {
   std::call_once(loaded_once, [] { loaded = new Module(load()); });
   if (!loaded->table)
     throw RuntimeError(what + " needs OpenEXR through " + kExrModuleName + ": " + loaded->error);
+  loaded->table->set_threads(omp_get_max_threads());
   return *loaded->table;
 }
 
@@ -136,7 +140,10 @@ std::vector<std::uint8_t> encode_exr(const Image& image, const ImageMetadata& me
     keys.push_back(key.c_str());
     values.push_back(value.c_str());
   }
+  // room for the uncompressed pixels and the tables up front: grown by the writes, the buffer was
+  // reallocated and copied at every doubling
   std::vector<std::uint8_t> bytes;
+  bytes.reserve(image.pixels.size() * sizeof(float) + std::size_t(image.height) * 16 + 65536);
   auto grow = [](void* user, std::size_t size) noexcept -> unsigned char* {
     auto& v = *static_cast<std::vector<std::uint8_t>*>(user);
     try {

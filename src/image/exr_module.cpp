@@ -9,6 +9,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
 #include <OpenEXR/openexr.h>
 
 #include <algorithm>
@@ -207,6 +208,7 @@ int encode(int width, int height, const char* const* names, int count, const flo
            void* user, std::size_t* size, char* error, std::size_t error_size) try {
   Imf::Header header(width, height);
   header.compression() = Imf::ZIP_COMPRESSION;
+  header.zipCompressionLevel() = kRayvecExrZipLevel;
   const std::size_t nch = std::size_t(count);
   for (std::size_t c = 0; c < nch; ++c) header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
   header.insert("oiio:ColorSpace", Imf::StringAttribute("Linear"));
@@ -230,7 +232,13 @@ int encode(int width, int height, const char* const* names, int count, const flo
   return kRayvecExrFailed;
 }
 
-constexpr RayvecExrModule kModule = {kRayvecExrAbi, open_file, channel_name, read_rows, close_file, encode};
+void set_threads(int threads) {
+  const int workers = threads > 1 ? threads : 0;  // 0: the calling thread alone
+  if (workers != Imf::globalThreadCount()) Imf::setGlobalThreadCount(workers);
+}
+
+constexpr RayvecExrModule kModule = {kRayvecExrAbi, open_file, channel_name, read_rows,
+                                     close_file,    encode,    set_threads};
 
 }  // namespace
 

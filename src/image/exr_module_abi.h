@@ -9,7 +9,10 @@
 extern "C" {
 
 // Bumped whenever the table below or a signature in it changes; the loader refuses another version.
-constexpr int kRayvecExrAbi = 1;
+constexpr int kRayvecExrAbi = 2;
+
+// The zlib level of the EXR files rayvec writes (docs/benchmarks.md#decision-exr-zip-level).
+constexpr int kRayvecExrZipLevel = 1;
 
 enum RayvecExrStatus : int {
   kRayvecExrOk = 0,
@@ -47,11 +50,15 @@ struct RayvecExrModule {
   void (*close)(void* file);
 
   // Encodes width x height pixels of the `count` channels `names` (floats interleaved) as 32-bit float,
-  // ZIP-compressed scanlines with `meta_count` string attributes keys[i] = values[i]. The bytes go to
-  // the buffer `grow(user, …)` returns; *size receives their number.
+  // ZIP-compressed scanlines (zlib level kRayvecExrZipLevel) with `meta_count` string attributes keys[i] =
+  // values[i]. The bytes go to the buffer `grow(user, …)` returns; *size receives their number.
   int (*encode)(int width, int height, const char* const* names, int count, const float* pixels,
                 const char* const* keys, const char* const* values, int meta_count, RayvecExrGrowFn grow,
                 void* user, std::size_t* size, char* error, std::size_t error_size);
+
+  // The threads that compress and decompress line blocks in files opened or encoded from here on
+  // (OpenEXR's global thread pool; 1: none beside the caller's).
+  void (*set_threads)(int threads);
 };
 
 // The one symbol the module exports: rayvec_exr_module.
