@@ -12,6 +12,9 @@ namespace rayvec {
 // to its first 40 bytes followed by "..." so that a megabyte-long token gives a one-line message.
 std::string printable(std::string_view text);
 
+// The size of the chunks the CSV readers parse in parallel (csv_chunks.h).
+inline constexpr std::size_t kCsvChunkBytes = std::size_t(1) << 20;
+
 // Walks `text` line by line. Accepts LF and CRLF line ends and a last line without one.
 class LineCursor {
  public:
@@ -19,6 +22,7 @@ class LineCursor {
   // The next line without its line end; false at the end of the text.
   bool next(std::string_view& line);
   std::size_t line_number() const { return line_; }  // 1-based number of the line last returned
+  std::size_t position() const { return pos_; }      // offset of the next line (past the end at the end)
 
  private:
   std::string_view text_;

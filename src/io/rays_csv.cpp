@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "geometry/coordinate_range.h"
+#include "io/csv_chunks.h"
 #include "io/csv_fields.h"
 #include "io/text_file.h"
 #include "io/input_error.h"
@@ -64,33 +65,40 @@ void validate(const float* f, std::size_t n, const CsvPlace& where) {
 
 }  // namespace
 
-RayBatch parse_rays_csv(std::string_view text, const std::string& name) {
-  RayBatch rays;
-  // A typical line is ~60-100 bytes: reserving avoids regrowing eight arrays for millions of rays.
-  rays.reserve(text.size() / 64 + 1);
+RayBatch parse_rays_csv(std::string_view text, const std::string& name, std::size_t chunk_bytes) {
+  // The first line with data may name the columns: found here, then the rays after it in chunks.
   LineCursor cursor(text);
   std::string_view line;
-  bool data_seen = false;
-  while (cursor.next(line)) {
+  std::size_t start = text.size(), first_line = 1;  // where the rays begin, and that line's number
+  for (std::size_t at = cursor.position(); cursor.next(line); at = cursor.position()) {
     if (is_blank_or_comment(line)) continue;
-    const CsvPlace where{name, cursor.line_number()};
-    const std::size_t n = count_fields(line);
-    if (!data_seen && is_header(line)) {
-      data_seen = true;
-      continue;
-    }
-    data_seen = true;
+    const bool header = is_header(line);
+    start = header ? std::min(cursor.position(), text.size()) : at;
+    first_line = cursor.line_number() + (header ? 1 : 0);
+    break;
+  }
+  const auto parse = [&](RayBatch& rays, std::string_view row, std::size_t number) {
+    if (is_blank_or_comment(row)) return;
+    const CsvPlace where{name, number};
+    const std::size_t n = count_fields(row);
     if (n != 6 && n != 8) {
-      check_no_inner_cr(line, where);
+      check_no_inner_cr(row, where);
       throw InputError(name, where.line,
                        "found " + std::to_string(n) + (n == 1 ? " field" : " fields") +
                            ", expected 6 (ox,oy,oz,dx,dy,dz) or 8 (ox,oy,oz,dx,dy,dz,tmin,tmax)");
     }
     float f[8] = {0, 0, 0, 0, 0, 0, 0.0f, kInf};
-    parse_fields(line, f, n, where);
+    parse_fields(row, f, n, where);
     validate(f, n, where);
     rays.push_back(Ray{{f[0], f[1], f[2]}, {f[3], f[4], f[5]}, f[6], f[7]});
-  }
+  };
+  const std::vector<RayBatch> parts =
+      parse_csv_chunks<RayBatch>(text.substr(start), first_line, parse, chunk_bytes);
+  RayBatch rays;
+  std::size_t total = 0;
+  for (const RayBatch& part : parts) total += part.size();
+  rays.reserve(total);
+  for (const RayBatch& part : parts) rays.append(part);
   return rays;
 }
 

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "geometry/coordinate_range.h"
+#include "io/csv_chunks.h"
 #include "io/csv_fields.h"
 #include "io/text_file.h"
 #include "io/input_error.h"
@@ -26,16 +28,24 @@ std::string show(double x, const char* format = "%.17g") {
   return buf;
 }
 
+// The parts' rows, in order, as one vector.
+template <class T>
+std::vector<T> joined(std::vector<std::vector<T>> parts) {
+  if (parts.size() == 1) return std::move(parts[0]);
+  std::size_t total = 0;
+  for (const auto& part : parts) total += part.size();
+  std::vector<T> all;
+  all.reserve(total);
+  for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+  return all;
+}
+
 }  // namespace
 
-std::vector<Vec3f> parse_verts_csv(std::string_view text, const std::string& name) {
-  std::vector<Vec3f> verts;
-  verts.reserve(text.size() / 72 + 1);  // rows of three %.18e numbers are ~75 bytes
-  LineCursor cursor(text);
-  std::string_view line;
-  while (cursor.next(line)) {
-    if (is_blank_or_comment(line)) continue;
-    const CsvPlace where{name, cursor.line_number()};
+std::vector<Vec3f> parse_verts_csv(std::string_view text, const std::string& name, std::size_t chunk_bytes) {
+  const auto parse = [&](std::vector<Vec3f>& verts, std::string_view line, std::size_t number) {
+    if (is_blank_or_comment(line)) return;
+    const CsvPlace where{name, number};
     expect_three(line, where, "x,y,z");
     float f[3];
     parse_fields(line, f, 3, where);
@@ -47,23 +57,20 @@ std::vector<Vec3f> parse_verts_csv(std::string_view text, const std::string& nam
                          "coordinate " + std::to_string(k + 1) + " (" + show(double(f[k]), "%.9g") +
                              ") is beyond " + kCoordinateRangeText);
     verts.push_back({f[0], f[1], f[2]});
-  }
-  return verts;
+  };
+  return joined(parse_csv_chunks<std::vector<Vec3f>>(text, 1, parse, chunk_bytes));
 }
 
 std::vector<std::array<uint32_t, 3>> parse_faces_csv(std::string_view text, const std::string& name,
-                                                     std::size_t vertex_count) {
-  std::vector<std::array<uint32_t, 3>> faces;
-  faces.reserve(text.size() / 72 + 1);
-  LineCursor cursor(text);
-  std::string_view line;
-  while (cursor.next(line)) {
-    if (is_blank_or_comment(line)) continue;
-    const CsvPlace where{name, cursor.line_number()};
+                                                     std::size_t vertex_count, std::size_t chunk_bytes) {
+  using Face = std::array<uint32_t, 3>;
+  const auto parse = [&](std::vector<Face>& faces, std::string_view line, std::size_t number) {
+    if (is_blank_or_comment(line)) return;
+    const CsvPlace where{name, number};
     expect_three(line, where, "three 0-based vertex indices");
     double f[3];
     parse_fields(line, f, 3, where);
-    std::array<uint32_t, 3> face{};
+    Face face{};
     for (int k = 0; k < 3; ++k) {
       // the message only when there is one: formatting it for every field was a third of a
       // million-face run
@@ -79,8 +86,8 @@ std::vector<std::array<uint32_t, 3>> parse_faces_csv(std::string_view text, cons
       face[k] = static_cast<uint32_t>(f[k]);
     }
     faces.push_back(face);
-  }
-  return faces;
+  };
+  return joined(parse_csv_chunks<std::vector<Face>>(text, 1, parse, chunk_bytes));
 }
 
 std::vector<Vec3f> read_verts_csv(const std::string& path) {

@@ -42,6 +42,7 @@ struct RayBatch {
   std::size_t size() const { return ox.size(); }
   void reserve(std::size_t n);
   void push_back(const Ray& r);
+  void append(const RayBatch& other);
   Ray operator[](std::size_t i) const {
     return Ray{{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}, tmin[i], tmax[i]};
   }
@@ -49,6 +50,13 @@ struct RayBatch {
 
 inline void RayBatch::reserve(std::size_t n) {
   for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tmin, &tmax}) v->reserve(n);
+}
+
+inline void RayBatch::append(const RayBatch& other) {
+  std::vector<float>* const mine[] = {&ox, &oy, &oz, &dx, &dy, &dz, &tmin, &tmax};
+  const std::vector<float>* const theirs[] = {&other.ox, &other.oy, &other.oz,   &other.dx,
+                                              &other.dy, &other.dz, &other.tmin, &other.tmax};
+  for (int k = 0; k < 8; ++k) mine[k]->insert(mine[k]->end(), theirs[k]->begin(), theirs[k]->end());
 }
 
 inline void RayBatch::push_back(const Ray& r) {
