@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/camera_rays.h"
+#include "render/pixel_samples.h"
 #include "render/renderer.h"
 #include "render/whitted.h"
 #include "shaders/shading_model.h"

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <vector>
 
 #include "platform/stopwatch.h"
@@ -13,34 +12,6 @@
 #include "render/tile_renderer.h"
 
 namespace rayvec {
-namespace {
-
-// A 32-bit integer hash (Wellons' "lowbias32"): decorrelated jitter without a stateful RNG, so the
-// image does not depend on which thread renders which tile.
-uint32_t hash32(uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-
-float unit_float(uint32_t h) { return float(h >> 8) * (1.0f / 16777216.0f); }
-
-}  // namespace
-
-std::pair<float, float> sample_position(int x, int y, int s, int n) {
-  if (n <= 1) return {0.5f, 0.5f};
-  const uint32_t seed = hash32(uint32_t(x) * 0x9e3779b9U ^ hash32(uint32_t(y) + 0x632be5abU));
-  const float jx = unit_float(hash32(seed ^ uint32_t(2 * s))),
-              jy = unit_float(hash32(seed ^ uint32_t(2 * s + 1)));
-  const int k = static_cast<int>(std::lround(std::sqrt(double(n))));
-  if (k * k == n) return {(float(s % k) + jx) / float(k), (float(s / k) + jy) / float(k)};
-  // N-rooks: sample s takes column stratum s and a row stratum from a per-pixel rotation.
-  const int row = int((uint32_t(s) + seed) % uint32_t(n));
-  return {(float(s) + jx) / float(n), (float(row) + jy) / float(n)};
-}
 
 Image render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
              const std::function<void(double)>& progress) {

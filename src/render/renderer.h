@@ -13,16 +13,11 @@
 
 namespace rayvec {
 
-// Renders the scene under `settings` (usually scene.render; spp as in sample_position, the AOVs as
+// Renders the scene under `settings` (usually scene.render; samples placed by PixelSamples, the AOVs as
 // extra channels after R, G, B); fills stats.rays, stats.render_seconds and the thread-time fields.
 // The result is independent of the number of threads. `progress`, if set, is called from one thread
 // now and then with the finished fraction (0..1].
 Image render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
              const std::function<void(double)>& progress = {});
-
-// The position in [0,1)² of sample `s` of `n` inside pixel (x, y): the centre for n = 1, a jittered
-// k×k grid when n = k², otherwise jittered N-rooks (one sample per row and per column stratum).
-// Deterministic: hashed from (x, y, s).
-std::pair<float, float> sample_position(int x, int y, int s, int n);
 
 }  // namespace rayvec

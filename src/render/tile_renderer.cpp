@@ -28,10 +28,11 @@ TileRenderer::TileRenderer(const Scene& scene, const Accelerator& accel, const R
       channels_(static_cast<int>(render_channel_names(settings.aov).size())),
       counting_(settings.aov.cost || settings.aov.bounces),
       pixel_cost_(accel),
-      whitted_(scene, accel, settings, counting_ ? &pixel_cost_ : nullptr) {}
+      whitted_(scene, accel, settings, counting_ ? &pixel_cost_ : nullptr),
+      samples_(settings.spp) {}
 
 void TileRenderer::render(const TileRect& rect, float* out) {
-  const int w = rect.width(), n = rect.pixels(), spp = std::max(1, settings_.spp);
+  const int w = rect.width(), n = rect.pixels(), spp = samples_.count();
   sum_.assign(n, Vec3f{});
   if (counting_) {
     costs_.assign(n, TraversalCost{});
@@ -44,15 +45,27 @@ void TileRenderer::render(const TileRect& rect, float* out) {
     for (int bx = 0; bx < w; bx += 4)
       for (int y = by; y < std::min(by + 4, h); ++y)
         for (int x = bx; x < std::min(bx + 4, w); ++x) block_order_.push_back(y * w + x);
+  seeds_.resize(n);
+  pixel_x_.resize(n);
+  pixel_y_.resize(n);
+  sample_x_.resize(n);
+  sample_y_.resize(n);
+  for (int j = 0; j < n; ++j) {
+    const int i = block_order_[j], x = rect.x0 + i % w, y = rect.y0 + i / w;
+    seeds_[j] = PixelSamples::seed(x, y);
+    pixel_x_[j] = float(x);
+    pixel_y_[j] = float(y);
+  }
   for (int s = 0; s < spp; ++s) {
     const auto ta = std::chrono::steady_clock::now();
     batch_.resize(n);
     hits_.resize(n);
     for (int j = 0; j < n; ++j) {
-      const int i = block_order_[j], x = rect.x0 + i % w, y = rect.y0 + i / w;
-      const auto [sx, sy] = sample_position(x, y, s, spp);
-      batch_[j] = camera_.ray(float(x) + sx, float(y) + sy);
+      const auto [sx, sy] = samples_.position(seeds_[j], s);
+      sample_x_[j] = pixel_x_[j] + sx;
+      sample_y_[j] = pixel_y_[j] + sy;
     }
+    camera_.rays(sample_x_.data(), sample_y_.data(), n, batch_.data());
     accel_.closest_stream(batch_.data(), hits_.data(), n);
     rays.primary += uint64_t(n);
     const auto tb = std::chrono::steady_clock::now();

@@ -1,6 +1,6 @@
 // TileRenderer: renders one 16×16 tile of the image at a time, the unit that render() hands to its
 // OpenMP threads and that a distributed render deals to its ranks. A pixel's value depends only on
-// the pixel (its samples are hashed from (x, y, s), see sample_position), never on which thread,
+// the pixel (its samples are hashed from (x, y, s), see PixelSamples), never on which thread,
 // rank or order renders its tile, so every way of dealing tiles gives the same image, bit for bit.
 #pragma once
 #include <string>
@@ -9,6 +9,7 @@
 #include "accel/accelerator.h"
 #include "render/camera_rays.h"
 #include "render/pixel_cost.h"
+#include "render/pixel_samples.h"
 #include "render/render_stats.h"
 #include "render/whitted.h"
 #include "scene/scene.h"
@@ -64,7 +65,10 @@ class TileRenderer {
   const bool counting_;
   PixelCost pixel_cost_;
   Whitted whitted_;
+  PixelSamples samples_;
   std::vector<int> block_order_;  // the tile's pixels by 4×4 blocks: the order of batch_ and hits_
+  std::vector<uint32_t> seeds_;   // in block order: each pixel's PixelSamples::seed
+  std::vector<float> pixel_x_, pixel_y_, sample_x_, sample_y_;  // pixel corners, sample positions
   std::vector<Ray> batch_;
   std::vector<Hit> hits_;
   std::vector<Vec3f> sum_;

@@ -10,6 +10,8 @@
 
 #if defined(__SSE2__)
 #include <immintrin.h>
+#else
+#include <cmath>
 #endif
 
 namespace rayvec::sse {
@@ -43,6 +45,9 @@ struct Float4 {
 RAYVEC_INLINE Float4 operator+(Float4 a, Float4 b) { return {_mm_add_ps(a.v, b.v)}; }
 RAYVEC_INLINE Float4 operator-(Float4 a, Float4 b) { return {_mm_sub_ps(a.v, b.v)}; }
 RAYVEC_INLINE Float4 operator*(Float4 a, Float4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+// Correctly rounded, as the scalar / and std::sqrt are: a lane gives the scalar operation's bits.
+RAYVEC_INLINE Float4 operator/(Float4 a, Float4 b) { return {_mm_div_ps(a.v, b.v)}; }
+RAYVEC_INLINE Float4 vsqrt(Float4 a) { return {_mm_sqrt_ps(a.v)}; }
 // Min and max by the x86 rule: a < b ? a : b (and a > b ? a : b), so where either is NaN the result
 // is b — pass the accumulator as b to keep it when the new value is NaN.
 RAYVEC_INLINE Float4 vmin(Float4 a, Float4 b) { return {_mm_min_ps(a.v, b.v)}; }
@@ -93,6 +98,12 @@ RAYVEC_INLINE Float4 operator-(Float4 a, Float4 b) {
 }
 RAYVEC_INLINE Float4 operator*(Float4 a, Float4 b) {
   return lanewise(a, b, [](float x, float y) { return x * y; });
+}
+RAYVEC_INLINE Float4 operator/(Float4 a, Float4 b) {
+  return lanewise(a, b, [](float x, float y) { return x / y; });
+}
+RAYVEC_INLINE Float4 vsqrt(Float4 a) {
+  return lanewise(a, a, [](float x, float) { return std::sqrt(x); });
 }
 RAYVEC_INLINE Float4 vmin(Float4 a, Float4 b) {
   return lanewise(a, b, [](float x, float y) { return x < y ? x : y; });

@@ -9,6 +9,7 @@
 #include "accel/accelerator.h"
 #include "render/camera_rays.h"
 #include "render/effects.h"
+#include "render/pixel_samples.h"
 #include "render/renderer.h"
 #include "render_test_scenes.h"
 
