@@ -1,7 +1,8 @@
 // render(): the pipeline from camera to framebuffer. The image is cut into 16×16 tiles rendered in
 // parallel (OpenMP, dynamic schedule: tiles with glass cost far more than background); in each tile
 // the primary rays of one sample go to Accelerator::closest_stream together (a coherent packet),
-// then every hit is shaded by the Whitted integrator, which traces its secondary rays one by one.
+// then the shadow rays of their hits, light by light, to Accelerator::occluded_stream together, and
+// every hit is shaded by the Whitted integrator, which traces the deeper rays one by one.
 #pragma once
 #include <functional>
 

@@ -49,53 +49,86 @@ Vec3f Whitted::shade_observed(RayKind kind, Vec3f factor, const Ray& ray, const 
   return radiance;
 }
 
-Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye,
-                            RayCounts& rays) const {
+void Whitted::light_sample(const SurfacePoint& s, Vec3f origin, const Light& light, LightSample& l) const {
+  // Computed in locals and stored once: a field read back right after its stores (the shadow ray's
+  // direction from to_light) would wait on store forwarding.
+  l.faces = false;
+  if (max_component(light.power) <= 0) return;
+  Vec3f to_light, irradiance, shadow_dir;
+  float tmax = kInf;
+  if (light.type == Light::Type::point) {
+    const Vec3f d = light.position - s.p;
+    const float r2 = dot(d, d);
+    if (!(r2 > 0)) return;
+    to_light = d * (1.0f / std::sqrt(r2));
+    irradiance = light.power * (1.0f / r2);  // I / r²
+    shadow_dir = light.position - origin;    // the light sits at t = 1
+    tmax = kBeforeLight;
+  } else {
+    to_light = -light.direction;
+    irradiance = light.power;
+    shadow_dir = to_light;
+  }
+  // Only lights on the lit side of both normals can contribute: no shadow ray otherwise.
+  const float cos_s = dot(s.ns, to_light);
+  l = LightSample{to_light, irradiance, cos_s, Ray{origin, shadow_dir, 0.0f, tmax},
+                  dot(s.ng, to_light) > 0 && cos_s > 0};
+}
+
+Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye, RayCounts& rays,
+                            const Precomputed* lit) const {
   Vec3f sum{};
   const bool highlight = shaders::has_highlight(shaders::shading_model(m));
-  const Vec3f origin = offset_ray_origin(s.p, s.ng);
+  const Vec3f origin = lit ? Vec3f{} : offset_ray_origin(s.p, s.ng);
+  LightSample computed;
   for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
-    const Light& light = scene_.lights[li];
-    if (max_component(light.power) <= 0) continue;
-    Vec3f to_light, irradiance;
-    Ray shadow{origin, {}, 0.0f, kInf};
-    if (light.type == Light::Type::point) {
-      const Vec3f d = light.position - s.p;
-      const float r2 = dot(d, d);
-      if (!(r2 > 0)) continue;
-      to_light = d * (1.0f / std::sqrt(r2));
-      irradiance = light.power * (1.0f / r2);  // I / r²
-      shadow.dir = light.position - origin;    // the light sits at t = 1
-      shadow.tmax = kBeforeLight;
-    } else {
-      to_light = -light.direction;
-      irradiance = light.power;
-      shadow.dir = to_light;
-    }
-    // Only lights on the lit side of both normals can contribute: no shadow ray otherwise.
-    const float cos_s = dot(s.ns, to_light);
-    if (!(dot(s.ng, to_light) > 0) || !(cos_s > 0)) continue;
+    if (!lit) light_sample(s, origin, scene_.lights[li], computed);
+    const LightSample& l = lit ? lit->samples[li] : computed;
+    if (!l.faces) continue;
     if (settings_.effects.shadows) {
       ++rays.shadow;
-      const bool blocked = accel_.occluded(shadow);
-      if (observer_ && blocked) observer_->shadow(shadow, int(li), true, Vec3f{});
+      const bool blocked = lit ? lit->blocked[li] != 0 : accel_.occluded(l.shadow);
+      if (observer_ && blocked) observer_->shadow(l.shadow, int(li), true, Vec3f{});
       if (blocked) continue;
     }
-    const Vec3f e = irradiance * cos_s;
-    Vec3f lit = shaders::lambert(kd, e);
-    if (highlight) lit += shaders::blinn_phong(m.Ks, m.Ns, s.ns, to_light, to_eye, e);
-    sum += lit;
-    if (observer_ && settings_.effects.shadows) observer_->shadow(shadow, int(li), false, lit);
+    const Vec3f e = l.irradiance * l.cos_s;
+    Vec3f light = shaders::lambert(kd, e);
+    if (highlight) light += shaders::blinn_phong(m.Ks, m.Ns, s.ns, l.to_light, to_eye, e);
+    sum += light;
+    if (observer_ && settings_.effects.shadows) observer_->shadow(l.shadow, int(li), false, light);
   }
   return sum;
 }
 
-Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const {
+bool Whitted::lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const {
+  if (!hit.hit()) return false;
+  s = surface_point(scene_, ray, hit);
+  return shaders::is_lit(shaders::shading_model(scene_.materials[s.material]));
+}
+
+void Whitted::light_samples(const SurfacePoint& s, LightSample* out) const {
+  const Vec3f origin = offset_ray_origin(s.p, s.ng);
+  for (std::size_t li = 0; li < scene_.lights.size(); ++li)
+    light_sample(s, origin, scene_.lights[li], out[li]);
+}
+
+Vec3f Whitted::shade_primary(const Ray& ray, const Hit& hit, const SurfacePoint& s,
+                             const LightSample* samples, const uint8_t* blocked, RayCounts& rays) const {
+  const Precomputed lit{s, samples, blocked};
+  if (!observer_) return shade_hit(ray, hit, 0, 1.0f, rays, &lit);
+  observer_->enter(RayKind::camera, ray, hit, 0, 1.0f, Vec3f{1, 1, 1});
+  const Vec3f radiance = shade_hit(ray, hit, 0, 1.0f, rays, &lit);
+  observer_->leave(radiance);
+  return radiance;
+}
+
+Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays,
+                         const Precomputed* lit) const {
   if (!hit.hit()) {
     if (observer_) observer_->local(scene_.background);
     return scene_.background;
   }
-  const SurfacePoint s = surface_point(scene_, ray, hit);
+  const SurfacePoint s = lit ? lit->s : surface_point(scene_, ray, hit);
   const Material& m = scene_.materials[s.material];
   const shaders::ShadingModel model = shaders::shading_model(m);
   const Vec3f kd = diffuse_albedo(scene_, s);
@@ -105,7 +138,7 @@ Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight
   }
 
   const Vec3f dir = normalize(ray.dir);
-  Vec3f radiance = m.Ka * scene_.ambient + direct_light(s, m, kd, -dir, rays);
+  Vec3f radiance = m.Ka * scene_.ambient + direct_light(s, m, kd, -dir, rays, lit);
   if (shaders::refracts(m)) radiance *= m.d;  // dissolve: the local term's opacity over the refraction
   radiance += m.Ke;
   if (observer_) observer_->local(radiance);

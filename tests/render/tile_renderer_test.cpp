@@ -6,6 +6,7 @@
 #include <cstring>
 #include <random>
 
+#include "render/pixel_samples.h"
 #include "render/renderer.h"
 #include "render/tile_renderer.h"
 #include "scene/scene.h"
@@ -47,6 +48,57 @@ TEST(TileRenderer, TilesInAnyOrderMakeRendersImage) {
   RayCounts rays = a.rays;
   rays += b.rays;
   EXPECT_EQ(rays.total(), stats.rays.total());
+}
+
+// A tile traces its primary hits' shadow rays together, light by light (Whitted::lit_surface,
+// light_samples, shade_primary); each pixel must come out as Whitted::shade() tracing them one by
+// one makes it, bit for bit, with the same ray counts — with lights that face away, have no power
+// or sit on the surface, and with shadows off.
+TEST(TileRenderer, ShadowRaysTracedTogetherShadeAsOneByOne) {
+  for (const char* name : {"whitted", "shadows", "cornell_box", "refraction"}) {
+    for (const bool shadows : {true, false}) {
+      Scene scene = load_scene(std::string(RAYVEC_SOURCE_DIR) + "/scenes/" + name + ".json");
+      scene.camera.width = 37;
+      scene.camera.height = 21;
+      scene.lights.push_back(Light{Light::Type::point, {0, -50, 0}, {0, -1, 0}, {30, 30, 30}});  // below
+      scene.lights.push_back(Light{Light::Type::point, {0, 2, 0}, {0, -1, 0}, {0, 0, 0}});       // no power
+      scene.lights.push_back(Light{Light::Type::directional, {}, {0.6f, -0.8f, 0}, {0.5f, 0.5f, 0.5f}});
+      RenderSettings settings = scene.render;
+      settings.spp = 3;
+      settings.effects.shadows = shadows;
+      const auto accel = make_accelerator(AccelKind::bvh, scene.mesh, TraceConfig{Isa::scalar});
+      const CameraRays camera(scene.camera);
+      TileRenderer tiles(scene, *accel, settings, camera);
+      const TileGrid grid(scene.camera.width, scene.camera.height);
+      const Whitted whitted(scene, *accel, settings);
+      const PixelSamples samples(settings.spp);
+      RayCounts one_by_one;
+      std::vector<float> tile(std::size_t(kTileSize) * kTileSize * 3);
+      for (int t = 0; t < grid.count(); ++t) {
+        const TileRect rect = grid.rect(t);
+        tiles.render(rect, tile.data());
+        for (int y = rect.y0; y < rect.y1; ++y)
+          for (int x = rect.x0; x < rect.x1; ++x) {
+            Vec3f sum{};
+            for (int s = 0; s < settings.spp; ++s) {
+              const auto [sx, sy] = samples.position(PixelSamples::seed(x, y), s);
+              const Ray ray = camera.ray(float(x) + sx, float(y) + sy);
+              ++one_by_one.primary;
+              sum += whitted.shade(ray, accel->closest(ray), 0, 1.0f, one_by_one);
+            }
+            const Vec3f want = sum * (1.0f / float(settings.spp));
+            const float* got = &tile[(std::size_t(y - rect.y0) * rect.width() + (x - rect.x0)) * 3];
+            ASSERT_TRUE(got[0] == want.x && got[1] == want.y && got[2] == want.z)
+                << name << (shadows ? "" : " without shadows") << " pixel " << x << "," << y;
+          }
+      }
+      EXPECT_EQ(tiles.rays.shadow, one_by_one.shadow) << name;
+      EXPECT_EQ(tiles.rays.total(), one_by_one.total()) << name;
+      if (shadows) {
+        EXPECT_GT(one_by_one.shadow, 0u) << name;
+      }
+    }
+  }
 }
 
 }  // namespace
