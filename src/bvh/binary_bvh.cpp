@@ -10,6 +10,7 @@
 #include <new>
 
 #include "bvh/build_prim.h"
+#include "bvh/prim_partition.h"
 #include "bvh/sah_bins.h"
 #include "bvh/spatial_split.h"
 #include "geometry/triangle_mesh.h"
@@ -170,51 +171,7 @@ class Builder {
     } else {
       bin_range(begin, end, r, bins);
     }
-    Split best;
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!(ext[axis] > 0.0f)) continue;
-      // The sweeps visit only the occupied bins: an empty bin changes neither side, so a split
-      // after it costs the same as the one before it and is never strictly cheaper — skipping it
-      // keeps the choice (the first cheapest bin), and a small range's sweep no longer walks (and
-      // branches on) the many empty bins. used[0, m): the occupied bins in increasing order,
-      // gathered without branches.
-      const uint32_t* count = bins.count[axis];
-      int used[kMaxBins];
-      int m = 0;
-      for (int k = 0; k < bins_; ++k) {
-        used[m] = k;
-        m += count[k] != 0 ? 1 : 0;
-      }
-      // right_*[j]: bins used[j, m)
-      float right_area[kMaxBins];
-      uint32_t right_count[kMaxBins];
-      SweepBox acc;
-      for (int j = m - 1; j > 0; --j) {
-        acc.grow(bins, axis, used[j]);
-        right_area[j] = acc.half_area();
-        right_count[j] = acc.count;
-      }
-      SweepBox left;
-      int best_j = -1;
-      for (int j = 0; j + 1 < m; ++j) {  // both sides non-empty
-        left.grow(bins, axis, used[j]);
-        const float cost =
-            left.half_area() * leaf_cost(left.count) + right_area[j + 1] * leaf_cost(right_count[j + 1]);
-        if (cost < best.cost) {
-          best.cost = cost;
-          best.axis = axis;
-          best.bin = used[j];
-          best_j = j;
-        }
-      }
-      if (best_j >= 0) {  // boxes of the chosen split
-        BinBox l, rr;
-        for (int j = 0; j < m; ++j) (j <= best_j ? l : rr).grow(bins.at(axis, used[j]));
-        best.left = l.box();
-        best.right = rr.box();
-      }
-    }
-    return best;
+    return cheapest_split(bins, bins_, ext, [this](uint32_t count) { return leaf_cost(count); });
   }
 
   // ceil(n / leaf_block), by a shift for the usual power-of-two block (a division on every step of
@@ -261,125 +218,13 @@ class Builder {
     return b.box();
   }
 
-  // Moves the primitives of [begin, end) for which goes_left(p) holds before the others, returns
-  // the first of the others and the centroid bounds of both sides in `cbox` (the children's binning
-  // needs them, and the partition visits every centroid anyway). Chunked ranges (see chunked()):
-  // each chunk is partitioned in place as a task, then the right primitives before the split point
-  // trade places with the left ones after it, in pieces as tasks — the root's partition was the
-  // largest serial step of the build, and a second buffer to partition through would cost 32 bytes
-  // a triangle of fresh memory. The order inside each side does not matter: every later decision
-  // depends only on the set of primitives in a range.
+  // Moves the primitives of [begin, end) for which goes_left(p) holds before the others
+  // (bvh/prim_partition.h), in chunks as tasks where chunked(…, kParallelPartition).
   template <class F>
   uint32_t partition_range(uint32_t begin, uint32_t end, int depth, const F& goes_left, BBox (&cbox)[2]) {
-    if (!chunked(end - begin, depth, kParallelPartition))
-      return partition_serial(begin, end, goes_left, cbox);
-    constexpr int C = kBinningChunks;
-    const uint32_t step = (end - begin + C - 1) / C;
-    uint32_t first[C + 1], mid[C];
-    BBox sides[C][2];
-    for (int c = 0; c <= C; ++c) first[c] = std::min(end, begin + uint32_t(c) * step);
-    for (int c = 0; c < C; ++c) {
-#pragma omp task shared(first, mid, sides, goes_left) firstprivate(c)
-      mid[c] = partition_serial(first[c], first[c + 1], goes_left, sides[c]);
-    }
-#pragma omp taskwait
-    uint32_t split = begin;
-    for (int c = 0; c < C; ++c) split += mid[c] - first[c];
-    // the misplaced primitives, as runs in order: right ones before `split`, left ones after it
-    // (as many of each)
-    Runs right_before, left_after;
-    for (int c = 0; c < C; ++c) {
-      right_before.add(mid[c], std::min(first[c + 1], split));
-      left_after.add(std::max(first[c], split), mid[c]);
-    }
-    const uint32_t misplaced = right_before.size();
-    for (int t = 0; t < C; ++t) {
-      const auto k0 = uint32_t(uint64_t(misplaced) * uint32_t(t) / C);
-      const auto k1 = uint32_t(uint64_t(misplaced) * uint32_t(t + 1) / C);
-#pragma omp task shared(right_before, left_after) firstprivate(k0, k1)
-      {
-        Runs::Cursor a = right_before.at(k0), b = left_after.at(k0);
-        for (uint32_t k = k0; k < k1; ++k) std::swap(prims_[a.next()], prims_[b.next()]);
-      }
-    }
-#pragma omp taskwait
-    for (int side = 0; side < 2; ++side) {
-      BinBox box;
-      for (int c = 0; c < C; ++c)
-        for (int a = 0; a < 3; ++a) {
-          box.lo[a] = min_keep(box.lo[a], sides[c][side].lo[a]);
-          box.hi[a] = max_keep(box.hi[a], sides[c][side].hi[a]);
-        }
-      cbox[side] = box.box();
-    }
-    return split;
-  }
-
-  // At most kBinningChunks runs [begin, end) of primitive positions, read as one sequence.
-  struct Runs {
-    uint32_t begin[kBinningChunks], end[kBinningChunks];
-    int count = 0;
-    void add(uint32_t b, uint32_t e) {
-      if (b >= e) return;
-      begin[count] = b;
-      end[count++] = e;
-    }
-    uint32_t size() const {
-      uint32_t n = 0;
-      for (int r = 0; r < count; ++r) n += end[r] - begin[r];
-      return n;
-    }
-    // Walks the positions from the k-th on.
-    struct Cursor {
-      const Runs* runs;
-      int r;
-      uint32_t at;
-      uint32_t next() {
-        while (at == runs->end[r]) at = runs->begin[++r];
-        return at++;
-      }
-    };
-    Cursor at(uint32_t k) const {
-      int r = 0;
-      while (r < count && k >= end[r] - begin[r]) {
-        k -= end[r] - begin[r];
-        ++r;
-      }
-      // k == size(): a cursor that is never read
-      return r < count ? Cursor{this, r, begin[r] + k} : Cursor{this, 0, 0};
-    }
-  };
-
-  // Each primitive is tested once: [begin, i) goes left, [j, end) goes right, and [i, j) is not yet
-  // tested. The centroid bounds of both sides grow on the way (x86 min/max with the accumulator
-  // second, so a NaN centroid is ignored as in range_box).
-  template <class F>
-  uint32_t partition_serial(uint32_t begin, uint32_t end, const F& goes_left, BBox (&cbox)[2]) {
-    using sse::Float4;
-    const Float4 half = Float4::broadcast(0.5f);
-    Float4 lo[2] = {Float4::broadcast(kInf), Float4::broadcast(kInf)};
-    Float4 hi[2] = {Float4::broadcast(-kInf), Float4::broadcast(-kInf)};
-    uint32_t i = begin, j = end;
-    while (i < j) {
-      Prim& p = prims_[i];
-      const Float4 c = (Float4::load(p.lo).xyz() + Float4::load(p.hi)) * half;
-      const int side = goes_left(p) ? 0 : 1;
-      lo[side] = vmin(c, lo[side]);
-      hi[side] = vmax(c, hi[side]);
-      if (side == 0) {
-        ++i;
-      } else {
-        --j;
-        std::swap(p, prims_[j]);
-      }
-    }
-    for (int s = 0; s < 2; ++s) {
-      float l[4], h[4];
-      lo[s].store(l);
-      hi[s].store(h);
-      cbox[s] = BBox{{l[0], l[1], l[2]}, {h[0], h[1], h[2]}};
-    }
-    return i;
+    if (chunked(end - begin, depth, kParallelPartition))
+      return prim_partition::chunked(prims_, begin, end, goes_left, cbox);
+    return prim_partition::serial(prims_, begin, end, goes_left, cbox);
   }
 
   // With room for spatial splits the ranges leave gaps (each range's unused room): the leaves are

@@ -1,5 +1,5 @@
 // The binned SAH builder's bins (bvh/binary_bvh.cpp): a bin's box and count, the bins of all three
-// axes over a range of primitives in 4-lane form, the chosen split, and the bin of a centroid.
+// axes over a range of primitives in 4-lane form, the cheapest split, and the bin of a centroid.
 // Internal to the builder; the same arithmetic as its 4-lane binning, so both agree on every bin.
 #pragma once
 #include <bit>
@@ -134,6 +134,57 @@ inline float right_threshold(float lo, float scale, int bins, int last_left) {
     (bin_of(float_of_rank(mid), lo, scale, bins) <= last_left ? left : right) = mid;
   }
   return float_of_rank(right);
+}
+
+// The cheapest split of binned primitives over `nbins` bins a side, along the axes whose centroid
+// extent `ext` is positive: cost left.half_area · leaf_cost(left count) + right's, both sides
+// non-empty; the first cheapest bin on ties (axes in order). The sweeps visit only the occupied bins:
+// an empty bin changes neither side, so a split after it costs the same as the one before it and is
+// never strictly cheaper — skipping it keeps the choice, and a small range's sweep no longer walks
+// (and branches on) the many empty bins.
+template <class LeafCost>
+Split cheapest_split(const Bins& bins, int nbins, Vec3f ext, const LeafCost& leaf_cost) {
+  Split best;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!(ext[axis] > 0.0f)) continue;
+    // used[0, m): the occupied bins in increasing order, gathered without branches
+    const uint32_t* count = bins.count[axis];
+    int used[kMaxBins];
+    int m = 0;
+    for (int k = 0; k < nbins; ++k) {
+      used[m] = k;
+      m += count[k] != 0 ? 1 : 0;
+    }
+    // right_*[j]: bins used[j, m)
+    float right_area[kMaxBins];
+    uint32_t right_count[kMaxBins];
+    SweepBox acc;
+    for (int j = m - 1; j > 0; --j) {
+      acc.grow(bins, axis, used[j]);
+      right_area[j] = acc.half_area();
+      right_count[j] = acc.count;
+    }
+    SweepBox left;
+    int best_j = -1;
+    for (int j = 0; j + 1 < m; ++j) {  // both sides non-empty
+      left.grow(bins, axis, used[j]);
+      const float cost =
+          left.half_area() * leaf_cost(left.count) + right_area[j + 1] * leaf_cost(right_count[j + 1]);
+      if (cost < best.cost) {
+        best.cost = cost;
+        best.axis = axis;
+        best.bin = used[j];
+        best_j = j;
+      }
+    }
+    if (best_j >= 0) {  // boxes of the chosen split
+      BinBox l, r;
+      for (int j = 0; j < m; ++j) (j <= best_j ? l : r).grow(bins.at(axis, used[j]));
+      best.left = l.box();
+      best.right = r.box();
+    }
+  }
+  return best;
 }
 
 }  // namespace rayvec::sah_bins
