@@ -42,7 +42,7 @@ void TileRenderer::trace_shadow_rays(int n) {
   light_blocked_.resize(lights);
   for (int j = 0; j < n; ++j) {
     lit_[j] = whitted_.lit_surface(batch_[j], hits_[j], surfaces_[j]);
-    if (lit_[j]) whitted_.light_samples(surfaces_[j], &light_samples_[std::size_t(j) * lights]);
+    if (lit_[j]) whitted_.light_samples(surfaces_[j], light_samples_.data() + std::size_t(j) * lights);
   }
   // Gathered after every sample is written, so the copies read memory, not stores in flight.
   for (auto& r : light_rays_) r.clear();
@@ -113,8 +113,8 @@ void TileRenderer::render(const TileRect& rect, float* out) {
           const int32_t k = shadow_index_[std::size_t(j) * lights + li];
           blocked_[li] = k < 0 ? 0 : light_blocked_[li][std::size_t(k)];
         }
-        sum_[i] += whitted_.shade_primary(ray, h, surfaces_[j], &light_samples_[std::size_t(j) * lights],
-                                          blocked_.data(), rays);
+        sum_[i] += whitted_.shade_primary(
+            ray, h, surfaces_[j], light_samples_.data() + std::size_t(j) * lights, blocked_.data(), rays);
       } else {
         sum_[i] += whitted_.shade(ray, h, 0, 1.0f, rays);
       }
