@@ -35,6 +35,10 @@ void TileRenderer::trace_shadow_rays(int n) {
   const std::size_t lights = scene_.lights.size();
   surfaces_.resize(std::size_t(n));
   lit_.resize(std::size_t(n));
+  if (lights > kStreamedLights) {  // shade() traces them one by one
+    std::fill(lit_.begin(), lit_.end(), uint8_t(0));
+    return;
+  }
   light_samples_.resize(std::size_t(n) * lights);
   shadow_index_.assign(std::size_t(n) * lights, -1);
   blocked_.resize(lights);

@@ -17,6 +17,9 @@
 namespace rayvec {
 
 inline constexpr int kTileSize = 16;
+// Scenes with at most this many lights trace their camera hits' shadow rays as streams (a tile's
+// light samples take kTileSize² · lights · ~64 bytes); more lights, one by one.
+inline constexpr std::size_t kStreamedLights = 64;
 
 struct TileRect {
   int x0, y0, x1, y1;  // pixels [x0, x1) × [y0, y1)
@@ -58,7 +61,8 @@ class TileRenderer {
 
  private:
   // The shadow rays of the n primary hits in batch_ / hits_, traced light by light as streams:
-  // fills surfaces_, lit_, light_samples_, shadow_index_, light_rays_ and light_blocked_.
+  // fills surfaces_, lit_, light_samples_, shadow_index_, light_rays_ and light_blocked_ (with more
+  // than kStreamedLights lights only lit_, all 0).
   void trace_shadow_rays(int n);
 
   const Scene& scene_;
