@@ -87,7 +87,7 @@ void TileRenderer::render(const TileRect& rect, float* out) {
   sample_y_.resize(n);
   for (int j = 0; j < n; ++j) {
     const int i = block_order_[j], x = rect.x0 + i % w, y = rect.y0 + i / w;
-    seeds_[j] = PixelSamples::seed(x, y);
+    seeds_[j] = spp > 1 ? PixelSamples::seed(x, y) : 0;  // one sample: the centre, no jitter
     pixel_x_[j] = float(x);
     pixel_y_[j] = float(y);
   }
