@@ -23,9 +23,10 @@ inline Vec3f offset_ray_origin(Vec3f p, Vec3f n) {
   for (int i = 0; i < 3; ++i) {
     const auto ulps = static_cast<int32_t>(kIntScale * n[i]);
     // Moving the bit pattern moves away from zero for positive ints; flip for negative coordinates
-    // so that a positive normal component always increases the coordinate.
-    const auto bits = std::bit_cast<int32_t>(p[i]);
-    const float moved = std::bit_cast<float>(bits + (p[i] < 0 ? -ulps : ulps));
+    // so that a positive normal component always increases the coordinate. In unsigned arithmetic:
+    // next to −0 the signed sum would overflow (that coordinate takes the absolute offset anyway).
+    const auto bits = std::bit_cast<uint32_t>(p[i]);
+    const float moved = std::bit_cast<float>(bits + uint32_t(p[i] < 0 ? -ulps : ulps));
     out[i] = std::fabs(p[i]) < kOrigin ? p[i] + kFloatScale * n[i] : moved;
   }
   return out;

@@ -118,5 +118,21 @@ TEST(OffsetRay, OffsetIsSmallRelativeToTheCoordinate) {
   }
 }
 
+// Next to zero the absolute offset applies, including at −0 and the negative denormals, whose bit
+// patterns sit at the bottom of int32 (moving them by ulps overflowed a signed sum: UBSan's stage
+// catches that).
+TEST(OffsetRay, CoordinatesNextToZeroTakeTheAbsoluteOffset) {
+  for (float c : {-0.0f, 0.0f, -1e-45f, 1e-45f, -1e-38f, -0.03f}) {
+    for (float s : {1.0f, -1.0f}) {
+      const Vec3f n = normalize(Vec3f{s, -s, s});
+      const Vec3f o = offset_ray_origin(Vec3f{c, c, c}, n);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(o[i], c + (1.0f / 65536.0f) * n[i]) << c << " " << s << " " << i;
+        EXPECT_TRUE(std::isfinite(o[i]));
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rayvec
