@@ -42,6 +42,10 @@ struct RankWork {
 RankWork render_my_tiles(Cluster& cluster, TileDealer& dealer, const TileGrid& grid, int nc,
                          const Scene& scene, const Accelerator& accel, const RenderSettings& settings) {
   const CameraRays camera(scene.camera);
+  const std::size_t camera_rays =
+      std::size_t(grid.width) * std::size_t(grid.height) * std::size_t(std::max(1, settings.spp));
+  const TriangleNormals normals =
+      TriangleNormals::worth_it(scene.mesh.size(), camera_rays) ? TriangleNormals(scene) : TriangleNormals();
   const int threads = std::max(1, omp_get_max_threads());
   std::vector<std::unique_ptr<TileRenderer>> renderers(static_cast<std::size_t>(threads));
   RankWork work;
@@ -58,7 +62,8 @@ RankWork render_my_tiles(Cluster& cluster, TileDealer& dealer, const TileGrid& g
 #pragma omp parallel for schedule(dynamic, 1) num_threads(std::min(threads, r.count))
     for (int i = 0; i < r.count; ++i) {
       const int t = omp_get_thread_num();
-      if (!renderers[t]) renderers[t] = std::make_unique<TileRenderer>(scene, accel, settings, camera);
+      if (!renderers[t])
+        renderers[t] = std::make_unique<TileRenderer>(scene, accel, settings, camera, &normals);
       renderers[t]->render(grid.rect(r.first + i), work.pixels.data() + offset[i]);
       if (t == 0 && cluster.root()) dealer.serve();  // the main thread: MPI_THREAD_FUNNELED
     }

@@ -20,6 +20,10 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
   check_render_budget(scene, static_cast<int>(render_channel_names(settings.aov).size()),
                       available_memory_bytes());
   const CameraRays camera(cam);
+  const std::size_t camera_rays =
+      std::size_t(cam.width) * std::size_t(cam.height) * std::size_t(std::max(1, settings.spp));
+  const TriangleNormals normals =
+      TriangleNormals::worth_it(scene.mesh.size(), camera_rays) ? TriangleNormals(scene) : TriangleNormals();
   Image image(cam.width, cam.height, render_channel_names(settings.aov));
   const int nc = image.nchannels();
   const TileGrid grid(cam.width, cam.height);
@@ -33,7 +37,7 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
   // threads that have nothing to do (a 16x16 render: 3.5x the CPU time of the whole process).
 #pragma omp parallel num_threads(std::max(1, std::min(omp_get_max_threads(), tiles)))
   {
-    TileRenderer renderer(scene, accel, settings, camera);
+    TileRenderer renderer(scene, accel, settings, camera, &normals);
     std::vector<float> pixels(std::size_t(kTileSize) * kTileSize * nc);
 #pragma omp for schedule(dynamic, 1)
     for (int tile = 0; tile < tiles; ++tile) {

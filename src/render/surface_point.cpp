@@ -42,13 +42,24 @@ Vec3f unit_normal(Vec3f e1, Vec3f e2) {
 
 }  // namespace
 
-SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit) {
+TriangleNormals::TriangleNormals(const Scene& scene) : normals_(scene.mesh.size()) {
+  const auto n = static_cast<std::int64_t>(normals_.size());
+#pragma omp parallel for schedule(static) if (n >= 4096)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const auto t = static_cast<std::size_t>(k);
+    const Vec3f v0 = scene.mesh.vertex(t, 0);
+    normals_[t] = unit_normal(scene.mesh.vertex(t, 1) - v0, scene.mesh.vertex(t, 2) - v0);
+  }
+}
+
+SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
+                           const TriangleNormals* normals) {
   const std::size_t t = static_cast<std::size_t>(hit.tri);
   const Vec3f v0 = scene.mesh.vertex(t, 0), e1 = scene.mesh.vertex(t, 1) - v0,
               e2 = scene.mesh.vertex(t, 2) - v0;
   SurfacePoint s;
   s.p = v0 + e1 * hit.u + e2 * hit.v;
-  s.ng = unit_normal(e1, e2);
+  s.ng = normals && !normals->empty() ? (*normals)[t] : unit_normal(e1, e2);
   if (s.ng == Vec3f{0, 0, 0}) s.ng = -normalize(ray.dir);  // degenerate: face the ray
   s.entering = dot(s.ng, ray.dir) < 0;
   if (!s.entering) s.ng = -s.ng;

@@ -1,6 +1,9 @@
 // SurfacePoint: what shading needs to know about a hit — position, normals, texture coordinates,
 // material — in the orientation the shaders expect (normals facing the incoming ray).
 #pragma once
+#include <cstddef>
+#include <vector>
+
 #include "rays/ray.h"
 #include "scene/scene.h"
 
@@ -15,7 +18,25 @@ struct SurfacePoint {
   int32_t material = 0;
 };
 
-SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit);
+// The unit geometric normal of every triangle of a scene, with surface_point's arithmetic (the same
+// bits), so that shading a hit only looks it up: 12 bytes a triangle, made once per render on the
+// render's threads. It pays where a render shades more hits than the mesh has triangles, hence
+// worth_it: at most as many triangles as the render has camera rays.
+class TriangleNormals {
+ public:
+  TriangleNormals() = default;  // none: surface_point computes each hit's
+  explicit TriangleNormals(const Scene& scene);
+  static bool worth_it(std::size_t triangles, std::size_t camera_rays) { return triangles <= camera_rays; }
+  bool empty() const { return normals_.empty(); }
+  Vec3f operator[](std::size_t t) const { return normals_[t]; }
+
+ private:
+  std::vector<Vec3f> normals_;
+};
+
+// `normals`: the scene's TriangleNormals, or null (or empty) to compute the hit triangle's.
+SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
+                           const TriangleNormals* normals = nullptr);
 
 // Diffuse albedo at the point: Kd, times the map_Kd texture (bilinear, repeating) when present.
 Vec3f diffuse_albedo(const Scene& scene, const SurfacePoint& s);

@@ -20,15 +20,16 @@ std::vector<std::string> render_channel_names(const RenderSettings::Aovs& aov) {
 }
 
 TileRenderer::TileRenderer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-                           const CameraRays& camera)
+                           const CameraRays& camera, const TriangleNormals* normals)
     : scene_(scene),
       accel_(accel),
       settings_(settings),
       camera_(camera),
+      normals_(normals),
       channels_(static_cast<int>(render_channel_names(settings.aov).size())),
       counting_(settings.aov.cost || settings.aov.bounces),
       pixel_cost_(accel),
-      whitted_(scene, accel, settings, counting_ ? &pixel_cost_ : nullptr),
+      whitted_(scene, accel, settings, counting_ ? &pixel_cost_ : nullptr, normals),
       samples_(settings.spp) {}
 
 void TileRenderer::trace_shadow_rays(int n) {
@@ -130,7 +131,7 @@ void TileRenderer::render(const TileRect& rect, float* out) {
       // AOVs from the first sample.
       float* px = out + std::size_t(i) * channels_ + 3;
       SurfacePoint sp;
-      if (h.hit()) sp = lit_[j] ? surfaces_[j] : surface_point(scene_, ray, h);
+      if (h.hit()) sp = lit_[j] ? surfaces_[j] : surface_point(scene_, ray, h, normals_);
       if (settings_.aov.depth) *px++ = h.hit() ? h.t * dot(ray.dir, camera_.forward()) : kInf;
       if (settings_.aov.normal) {
         const Vec3f nrm = h.hit() ? sp.ns : Vec3f{};

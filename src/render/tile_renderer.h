@@ -49,8 +49,9 @@ std::vector<std::string> render_channel_names(const RenderSettings::Aovs& aov);
 // One per thread (it holds the thread's scratch buffers and counters).
 class TileRenderer {
  public:
+  // `normals`: the scene's TriangleNormals (surface_point), or null.
   TileRenderer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-               const CameraRays& camera);
+               const CameraRays& camera, const TriangleNormals* normals = nullptr);
 
   // Every channel of the tile's pixels into `out`: rect.pixels() × channels floats, pixel-major, rows
   // top to bottom. Adds to rays, primary_seconds and shading_seconds.
@@ -69,6 +70,7 @@ class TileRenderer {
   const Accelerator& accel_;
   const RenderSettings& settings_;
   const CameraRays& camera_;
+  const TriangleNormals* normals_;
   const int channels_;
   const bool counting_;
   PixelCost pixel_cost_;

@@ -102,7 +102,7 @@ Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, 
 
 bool Whitted::lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const {
   if (!hit.hit()) return false;
-  s = surface_point(scene_, ray, hit);
+  s = surface_point(scene_, ray, hit, normals_);
   return shaders::is_lit(shaders::shading_model(scene_.materials[s.material]));
 }
 
@@ -128,7 +128,7 @@ Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight
     if (observer_) observer_->local(scene_.background);
     return scene_.background;
   }
-  const SurfacePoint s = lit ? lit->s : surface_point(scene_, ray, hit);
+  const SurfacePoint s = lit ? lit->s : surface_point(scene_, ray, hit, normals_);
   const Material& m = scene_.materials[s.material];
   const shaders::ShadingModel model = shaders::shading_model(m);
   const Vec3f kd = diffuse_albedo(scene_, s);

@@ -17,9 +17,10 @@ class Whitted {
   // Reads max_depth, min_contribution and effects of `settings`. `observer`, if not null, is told
   // about every ray (render/whitted_observer.h); it does not change the arithmetic, so the radiance
   // is the same with or without one.
+  // `normals`, if not null, holds the scene's TriangleNormals (surface_point).
   Whitted(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-          WhittedObserver* observer = nullptr)
-      : scene_(scene), accel_(accel), settings_(settings), observer_(observer) {}
+          WhittedObserver* observer = nullptr, const TriangleNormals* normals = nullptr)
+      : scene_(scene), accel_(accel), settings_(settings), observer_(observer), normals_(normals) {}
 
   // Radiance arriving along `ray` whose nearest hit is `hit` (already traced). `weight` is the
   // ray's contribution to its pixel (1 for primary rays). Counts the rays it spawns in `rays`.
@@ -74,6 +75,7 @@ class Whitted {
   const Accelerator& accel_;
   RenderSettings settings_;
   WhittedObserver* observer_;
+  const TriangleNormals* normals_;
 };
 
 }  // namespace rayvec
