@@ -45,7 +45,9 @@ RankWork render_my_tiles(Cluster& cluster, TileDealer& dealer, const TileGrid& g
   const std::size_t camera_rays =
       std::size_t(grid.width) * std::size_t(grid.height) * std::size_t(std::max(1, settings.spp));
   const TriangleNormals normals =
-      TriangleNormals::worth_it(scene.mesh.size(), camera_rays) ? TriangleNormals(scene) : TriangleNormals();
+      TriangleNormals::worth_it(scene.mesh.size(), camera_rays, available_memory_bytes())
+          ? TriangleNormals(scene)
+          : TriangleNormals();
   const int threads = std::max(1, omp_get_max_threads());
   std::vector<std::unique_ptr<TileRenderer>> renderers(static_cast<std::size_t>(threads));
   RankWork work;

@@ -21,12 +21,15 @@ struct SurfacePoint {
 // The unit geometric normal of every triangle of a scene, with surface_point's arithmetic (the same
 // bits), so that shading a hit only looks it up: 12 bytes a triangle, made once per render on the
 // render's threads. It pays where a render shades more hits than the mesh has triangles, hence
-// worth_it: at most as many triangles as the render has camera rays.
+// worth_it: at most as many triangles as the render has camera rays — and, being only a shortcut,
+// no more than a quarter of the memory still available (`available` bytes; 0 = unknown).
 class TriangleNormals {
  public:
   TriangleNormals() = default;  // none: surface_point computes each hit's
   explicit TriangleNormals(const Scene& scene);
-  static bool worth_it(std::size_t triangles, std::size_t camera_rays) { return triangles <= camera_rays; }
+  static bool worth_it(std::size_t triangles, std::size_t camera_rays, std::size_t available) {
+    return triangles <= camera_rays && (available == 0 || triangles * sizeof(Vec3f) <= available / 4);
+  }
   bool empty() const { return normals_.empty(); }
   Vec3f operator[](std::size_t t) const { return normals_[t]; }
 

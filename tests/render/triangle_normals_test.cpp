@@ -49,10 +49,12 @@ TEST(TriangleNormals, LookedUpNormalsAreTheComputedOnes) {
     }
 }
 
-TEST(TriangleNormals, MadeOnlyForMeshesNoLargerThanTheCameraRays) {
-  EXPECT_TRUE(TriangleNormals::worth_it(3392, 640 * 480));
-  EXPECT_TRUE(TriangleNormals::worth_it(307200, 640 * 480));
-  EXPECT_FALSE(TriangleNormals::worth_it(998000, 640 * 480));
+TEST(TriangleNormals, MadeOnlyForMeshesNoLargerThanTheCameraRaysAndAQuarterOfFreeMemory) {
+  EXPECT_TRUE(TriangleNormals::worth_it(3392, 640 * 480, 0));
+  EXPECT_TRUE(TriangleNormals::worth_it(307200, 640 * 480, 0));
+  EXPECT_FALSE(TriangleNormals::worth_it(998000, 640 * 480, 0));
+  EXPECT_TRUE(TriangleNormals::worth_it(1000, 1 << 20, 48000));  // 12 kB of 48 kB
+  EXPECT_FALSE(TriangleNormals::worth_it(1000, 1 << 20, 47999));
   EXPECT_TRUE(TriangleNormals(Scene{}).empty());
 }
 
