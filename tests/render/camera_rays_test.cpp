@@ -39,15 +39,14 @@ TEST(CameraRays, BatchGivesEachRaysBitsForEveryCameraAndPosition) {
     for (int n : {0, 1, 3, 4, 5, 8, 255, 256, 1000}) {
       std::vector<float> px(n), py(n);
       for (int i = 0; i < n; ++i) {
-        // Pixel corners, centres, jittered positions and the image's edges.
-        const int kind = int(rng() % 4);
+        // Pixel corners, centres, jittered positions, the top and left edges and the far corner.
+        const int kind = int(rng() % 6);
         const float x = float(rng() % uint32_t(c.width)), y = float(rng() % uint32_t(c.height));
         const float jx = float(rng() >> 8) / 16777216.0f, jy = float(rng() >> 8) / 16777216.0f;
-        px[i] = kind == 0 ? x : kind == 1 ? x + 0.5f : kind == 2 ? x + jx : float(c.width) * jx;
-        py[i] = kind == 0   ? y
-                : kind == 1 ? y + 0.5f
-                : kind == 2 ? y + jy
-                            : (kind & 1 ? 0.0f : float(c.height));
+        const float corners[4][2] = {
+            {x, y}, {x + 0.5f, y + 0.5f}, {x + jx, y + jy}, {float(c.width) * jx, 0.0f}};
+        px[i] = kind < 4 ? corners[kind][0] : kind == 4 ? 0.0f : float(c.width);
+        py[i] = kind < 4 ? corners[kind][1] : kind == 4 ? float(c.height) * jy : float(c.height);
       }
       std::vector<Ray> batch(n + 1);
       batch[n].tmin = -7.0f;  // past the end: untouched
