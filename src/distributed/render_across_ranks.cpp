@@ -42,12 +42,7 @@ struct RankWork {
 RankWork render_my_tiles(Cluster& cluster, TileDealer& dealer, const TileGrid& grid, int nc,
                          const Scene& scene, const Accelerator& accel, const RenderSettings& settings) {
   const CameraRays camera(scene.camera);
-  const std::size_t camera_rays =
-      std::size_t(grid.width) * std::size_t(grid.height) * std::size_t(std::max(1, settings.spp));
-  const TriangleNormals normals =
-      TriangleNormals::worth_it(scene.mesh.size(), camera_rays, available_memory_bytes())
-          ? TriangleNormals(scene)
-          : TriangleNormals();
+  const TriangleNormals normals = TriangleNormals::for_render(scene, settings.spp, available_memory_bytes());
   const int threads = std::max(1, omp_get_max_threads());
   std::vector<std::unique_ptr<TileRenderer>> renderers(static_cast<std::size_t>(threads));
   RankWork work;

@@ -20,11 +20,7 @@ Image render(const Scene& scene, const Accelerator& accel, const RenderSettings&
   const std::size_t available = available_memory_bytes();
   check_render_budget(scene, static_cast<int>(render_channel_names(settings.aov).size()), available);
   const CameraRays camera(cam);
-  const std::size_t camera_rays =
-      std::size_t(cam.width) * std::size_t(cam.height) * std::size_t(std::max(1, settings.spp));
-  const TriangleNormals normals = TriangleNormals::worth_it(scene.mesh.size(), camera_rays, available)
-                                      ? TriangleNormals(scene)
-                                      : TriangleNormals();
+  const TriangleNormals normals = TriangleNormals::for_render(scene, settings.spp, available);
   Image image(cam.width, cam.height, render_channel_names(settings.aov));
   const int nc = image.nchannels();
   const TileGrid grid(cam.width, cam.height);

@@ -52,6 +52,12 @@ TriangleNormals::TriangleNormals(const Scene& scene) : normals_(scene.mesh.size(
   }
 }
 
+TriangleNormals TriangleNormals::for_render(const Scene& scene, int spp, std::size_t available) {
+  const std::size_t camera_rays =
+      std::size_t(scene.camera.width) * std::size_t(scene.camera.height) * std::size_t(std::max(1, spp));
+  return worth_it(scene.mesh.size(), camera_rays, available) ? TriangleNormals(scene) : TriangleNormals();
+}
+
 SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
                            const TriangleNormals* normals) {
   const std::size_t t = static_cast<std::size_t>(hit.tri);

@@ -30,6 +30,8 @@ class TriangleNormals {
   static bool worth_it(std::size_t triangles, std::size_t camera_rays, std::size_t available) {
     return triangles <= camera_rays && (available == 0 || triangles * sizeof(Vec3f) <= available / 4);
   }
+  // The table for a render of the scene's camera at `spp` samples a pixel where worth_it, else none.
+  static TriangleNormals for_render(const Scene& scene, int spp, std::size_t available);
   bool empty() const { return normals_.empty(); }
   Vec3f operator[](std::size_t t) const { return normals_[t]; }
 
