@@ -6,6 +6,7 @@
 
 #include "io/input_error.h"
 #include "rays/pinhole_camera.h"
+#include "scene/camera_check.h"
 
 namespace rayvec {
 namespace {
@@ -29,12 +30,10 @@ Vec3f default_up(Vec3f toward_eye) {
 }
 
 void check_camera(const Camera& c) {
-  if (!(c.fov_y > 0 && c.fov_y < 180)) throw InputError("--fov: must be between 0 and 180 degrees");
-  const Vec3f forward = c.look_at - c.eye;
-  if (!(length(forward) > 0))
-    throw InputError("--eye/--look-at: the eye must differ from the point looked at");
-  if (!(length(cross(normalize(forward), c.up)) > 1e-6f))
-    throw InputError("--up: must not be zero or parallel to the view direction (eye to look-at)");
+  const std::optional<CameraProblem> p = camera_problem(c);
+  if (!p) return;
+  constexpr const char* kOption[] = {"--eye", "--look-at", "--up", "--fov"};
+  throw InputError(std::string(kOption[static_cast<int>(p->field)]) + ": " + p->what);
 }
 
 }  // namespace

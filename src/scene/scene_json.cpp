@@ -16,6 +16,7 @@
 #include "io/input_error.h"
 #include "kernels/intersector.h"
 #include "io/text_file.h"
+#include "scene/camera_check.h"
 #include "scene/default_view.h"
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
@@ -103,17 +104,15 @@ Camera read_camera(const Reader& r, const json& j) {
   r.keys(j, "camera", {"eye", "look_at", "up", "fov_y", "width", "height"});
   Camera c;
   if (j.contains("eye")) c.eye = r.vec3(j["eye"], "camera.eye");
-  if (!point_in_range(c.eye)) r.fail("camera.eye", std::string("is beyond ") + kCoordinateRangeText);
   if (j.contains("look_at")) c.look_at = r.vec3(j["look_at"], "camera.look_at");
   if (j.contains("up")) c.up = r.vec3(j["up"], "camera.up");
   if (j.contains("fov_y")) c.fov_y = r.number(j["fov_y"], "camera.fov_y");
   if (j.contains("width")) c.width = r.integer(j["width"], "camera.width", 1, 16384);
   if (j.contains("height")) c.height = r.integer(j["height"], "camera.height", 1, 16384);
-  if (!(c.fov_y > 0 && c.fov_y < 180)) r.fail("camera.fov_y", "must be between 0 and 180 degrees");
-  const Vec3f forward = c.look_at - c.eye;
-  if (!(length(forward) > 0)) r.fail("camera.look_at", "must differ from camera.eye");
-  if (!(length(cross(normalize(forward), c.up)) > 1e-6f))
-    r.fail("camera.up", "must not be zero or parallel to the view direction");
+  if (const std::optional<CameraProblem> p = camera_problem(c)) {
+    constexpr const char* kKey[] = {"camera.eye", "camera.look_at", "camera.up", "camera.fov_y"};
+    r.fail(kKey[static_cast<int>(p->field)], p->what);
+  }
   return c;
 }
 

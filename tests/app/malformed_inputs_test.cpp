@@ -316,6 +316,34 @@ TEST(MalformedInputs, AbsurdImageSizesAndDepthsAreRejectedBeforeWork) {
                         "--max-depth 1000000");
 }
 
+// Cameras whose float look-at frame would be NaN or Inf (every camera ray NaN: an image of background
+// and exit 0) are refused, naming the value, in a scene file and on the command line alike.
+TEST(MalformedInputs, CamerasWithoutAFloatFrameAreRejected) {
+  const auto camera = [](const std::string& fields) {
+    return "{" + kObjects + R"(, "camera": {)" + fields + "}}";
+  };
+  expect_render_rejects("cam_eye", camera(R"("eye": [1e30, 0, 0])"), "s.json:1: camera.eye: is beyond ±1e10");
+  expect_render_rejects("cam_look", camera(R"("look_at": [0, 1e30, 0])"), "camera.look_at: is beyond ±1e10");
+  expect_render_rejects("cam_up_huge", camera(R"("up": [1e30, 1e30, 0])"),
+                        "camera.up: needs its largest component between 1e-6 and 1e16");
+  expect_render_rejects("cam_up_tiny", camera(R"("up": [0, 1e-30, 0])"),
+                        "camera.up: needs its largest component between 1e-6 and 1e16");
+  expect_render_rejects("cam_up_parallel", camera(R"("eye": [0, 0, 5], "up": [0, 0, -3])"),
+                        "camera.up: must not be zero or parallel");
+  expect_render_rejects("cam_same", camera(R"("eye": [1, 2, 3], "look_at": [1, 2, 3])"),
+                        "camera.look_at: the eye must differ");
+  expect_render_rejects("cam_close", camera(R"("eye": [1e-30, 0, 0], "look_at": [0, 0, 0])"),
+                        "camera.look_at: is too close to the eye");
+  expect_render_rejects("cli_eye", "{" + kObjects + "}", "--eye: is beyond ±1e10",
+                        "--eye 1e30,0,0 --look-at 0,0,0");
+  expect_render_rejects("cli_look", "{" + kObjects + "}", "--look-at: is beyond ±1e10",
+                        "--look-at 0,0,-2e10");
+  expect_render_rejects("cli_up", "{" + kObjects + "}", "--up: needs its largest component",
+                        "--up 1e30,1e30,0");
+  expect_render_rejects("cli_close", "{" + kObjects + "}", "--look-at: is too close to the eye",
+                        "--eye 1e-30,0,0 --look-at 0,0,0");
+}
+
 TEST(MalformedInputs, UnwritableOutputIsExitOneAndCreatesNothing) {
   const std::string dir = test::temp_dir("malformed_unwritable");
   test::write_file(dir + "/m.obj", kTri);

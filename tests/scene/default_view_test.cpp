@@ -137,6 +137,27 @@ TEST(DefaultView, NamedViewsAndAnExplicitCameraWork) {
   }
 }
 
+// `--up` is a direction: scaled by a power of two anywhere in its range, it gives the same frame and the
+// same pixels; its range ends where the float frame would overflow or underflow.
+TEST(DefaultView, UpCountsByItsDirectionAcrossItsRange) {
+  const std::string dir = test::temp_dir("default_view_up_scale");
+  test::write_file(dir + "/m.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string render = "render -q " + dir + "/m.obj --width 16 --height 12 --eye 0.3,0.2,3 ";
+  ASSERT_EQ(test::run_cli(render + "--up 0,1,0.5 -o " + dir + "/unit.png").status, 0);
+  for (const char* up : {"0,0.0000152587890625,0.00000762939453125", "0,1099511627776,549755813888"}) {
+    const auto r = test::run_cli(render + "--up " + up + " -o " + dir + "/scaled.png");
+    ASSERT_EQ(r.status, 0) << up << ": " << r.err;
+    const auto same = test::run_cli("compare --max-pixel 0 " + dir + "/unit.png " + dir + "/scaled.png");
+    EXPECT_EQ(same.status, 0) << up << ": " << same.out;
+  }
+  for (const char* up : {"0,1e-7,0", "0,2e16,0"}) {
+    const auto r = test::run_cli(render + "--up " + up + " -o " + dir + "/bad.png");
+    EXPECT_EQ(r.status, 2) << up;
+    EXPECT_NE(r.err.find("--up: needs its largest component between 1e-6 and 1e16"), std::string::npos)
+        << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace rayvec
 
