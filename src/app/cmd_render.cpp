@@ -148,11 +148,20 @@ int run_render(RenderArgs& a) {
   const Image image = render_across_ranks(cluster(), scene, *accel, settings, stats, loads, bar.progress());
   bar.finish();                     // render() has drawn it at 100 %
   if (!cluster().root()) return 0;  // rank 0 has the image
-  if (non_background_pixels(image, scene.background) == 0)
-    std::fprintf(stderr,
-                 "warning: %s: the image shows only the background: the camera sees no geometry "
-                 "(try the default view, --view iso, or check --eye/--look-at)\n",
-                 a.scene.c_str());
+  if (non_background_pixels(image, scene.background) == 0) {
+    if (stats.rays.primary_hits == 0)
+      std::fprintf(stderr,
+                   "warning: %s: the image shows only the background: the camera sees no geometry "
+                   "(try the default view, --view iso, or check --eye/--look-at)\n",
+                   a.scene.c_str());
+    else
+      std::fprintf(stderr,
+                   "warning: %s: the image shows only the background colour: the camera sees geometry "
+                   "(%llu of %llu camera rays hit it) but no light reaches what it sees (check the lights, "
+                   "their intensity and the ambient colour)\n",
+                   a.scene.c_str(), (unsigned long long)stats.rays.primary_hits,
+                   (unsigned long long)stats.rays.primary);
+  }
 
   t = std::chrono::steady_clock::now();
   write_image(a.output, image,

@@ -19,6 +19,7 @@ namespace {
 // What a rank sends rank 0 besides its pixels: its counters, then its ranges as (first, count).
 enum Field {
   kPrimary,
+  kPrimaryHits,
   kShadow,
   kReflection,
   kRefraction,
@@ -74,6 +75,7 @@ RankWork render_my_tiles(Cluster& cluster, TileDealer& dealer, const TileGrid& g
   for (const auto& r : renderers) {
     if (!r) continue;
     work.header[kPrimary] += int64_t(r->rays.primary);
+    work.header[kPrimaryHits] += int64_t(r->rays.primary_hits);
     work.header[kShadow] += int64_t(r->rays.shadow);
     work.header[kReflection] += int64_t(r->rays.reflection);
     work.header[kRefraction] += int64_t(r->rays.refraction);
@@ -95,7 +97,7 @@ void place(const RankWork& work, const TileGrid& grid, Image& image, RenderStats
         std::copy_n(work.pixels.data() + at, std::size_t(rect.width()) * nc, &image.at(rect.x0, y, 0));
     }
   const RayCounts rays{uint64_t(h[kPrimary]), uint64_t(h[kShadow]), uint64_t(h[kReflection]),
-                       uint64_t(h[kRefraction])};
+                       uint64_t(h[kRefraction]), uint64_t(h[kPrimaryHits])};
   stats.rays += rays;
   stats.primary_thread_seconds += double(h[kPrimaryThread]) / kNanos;
   stats.shading_thread_seconds += double(h[kShadingThread]) / kNanos;

@@ -7,10 +7,13 @@ namespace rayvec {
 
 struct RayCounts {
   uint64_t primary = 0, shadow = 0, reflection = 0, refraction = 0;
+  // Of the primary rays, those that hit the geometry (not a ray count of its own: not in total()).
+  uint64_t primary_hits = 0;
 
   uint64_t total() const { return primary + shadow + reflection + refraction; }
   RayCounts& operator+=(const RayCounts& o) {
     primary += o.primary;
+    primary_hits += o.primary_hits;
     shadow += o.shadow;
     reflection += o.reflection;
     refraction += o.refraction;

@@ -112,6 +112,7 @@ void TileRenderer::render(const TileRect& rect, float* out) {
       const int i = block_order_[j];
       const Ray& ray = batch_[j];
       const Hit& h = hits_[j];
+      rays.primary_hits += h.hit() ? 1 : 0;
       if (counting_) pixel_cost_.reset();
       if (lit_[j]) {
         for (std::size_t li = 0; li < lights; ++li) {

@@ -126,6 +126,8 @@ Light read_light(const Reader& r, const json& j, const std::string& where) {
       if (j.contains(k)) r.fail(Reader::join(where, k), "belongs to directional lights");
     if (!j.contains("position")) r.fail(where + ".position", "missing");
     light.position = r.vec3(j["position"], where + ".position");
+    if (!point_in_range(light.position))
+      r.fail(where + ".position", std::string("is beyond ") + kCoordinateRangeText);
     if (j.contains("intensity")) light.power = r.colour(j["intensity"], where + ".intensity");
   } else if (type == "directional") {
     light.type = Light::Type::directional;
@@ -133,7 +135,10 @@ Light read_light(const Reader& r, const json& j, const std::string& where) {
       if (j.contains(k)) r.fail(Reader::join(where, k), "belongs to point lights");
     if (!j.contains("direction")) r.fail(where + ".direction", "missing");
     const Vec3f d = r.vec3(j["direction"], where + ".direction");
-    if (!(length(d) > 0)) r.fail(where + ".direction", "must not be zero");
+    if (!(largest_component(d) > 0)) r.fail(where + ".direction", "must not be zero");
+    if (!(largest_component(d) >= kMinDirection && largest_component(d) <= kMaxDirection))
+      r.fail(where + ".direction",
+             "needs its largest component between 1e-6 and 1e16 in magnitude (its length does not matter)");
     light.direction = normalize(d);
     if (j.contains("irradiance")) light.power = r.colour(j["irradiance"], where + ".irradiance");
   } else {

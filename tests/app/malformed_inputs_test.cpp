@@ -317,8 +317,9 @@ TEST(MalformedInputs, AbsurdImageSizesAndDepthsAreRejectedBeforeWork) {
 }
 
 // Cameras whose float look-at frame would be NaN or Inf (every camera ray NaN: an image of background
-// and exit 0) are refused, naming the value, in a scene file and on the command line alike.
-TEST(MalformedInputs, CamerasWithoutAFloatFrameAreRejected) {
+// and exit 0) are refused, naming the value, in a scene file and on the command line alike; so are
+// lights whose position or direction the float shading would turn into NaN (an unlit image).
+TEST(MalformedInputs, CamerasAndLightsWithoutFloatGeometryAreRejected) {
   const auto camera = [](const std::string& fields) {
     return "{" + kObjects + R"(, "camera": {)" + fields + "}}";
   };
@@ -334,6 +335,16 @@ TEST(MalformedInputs, CamerasWithoutAFloatFrameAreRejected) {
                         "camera.look_at: the eye must differ");
   expect_render_rejects("cam_close", camera(R"("eye": [1e-30, 0, 0], "look_at": [0, 0, 0])"),
                         "camera.look_at: is too close to the eye");
+  const auto light = [](const std::string& fields) {
+    return "{" + kObjects + R"(, "lights": [{)" + fields + "}]}";
+  };
+  expect_render_rejects("light_far", light(R"("type": "point", "position": [0, 1e30, 0])"),
+                        "lights[0].position: is beyond ±1e10");
+  expect_render_rejects("light_zero", light(R"("type": "directional", "direction": [0, 0, 0])"),
+                        "lights[0].direction: must not be zero");
+  for (const char* d : {"[1e-30, 0, -1e-30]", "[1e30, 0, -1e30]"})
+    expect_render_rejects("light_dir", light(std::string(R"("type": "directional", "direction": )") + d),
+                          "lights[0].direction: needs its largest component between 1e-6 and 1e16");
   expect_render_rejects("cli_eye", "{" + kObjects + "}", "--eye: is beyond ±1e10",
                         "--eye 1e30,0,0 --look-at 0,0,0");
   expect_render_rejects("cli_look", "{" + kObjects + "}", "--look-at: is beyond ±1e10",

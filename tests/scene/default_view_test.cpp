@@ -137,6 +137,23 @@ TEST(DefaultView, NamedViewsAndAnExplicitCameraWork) {
   }
 }
 
+// An image of nothing but the background says why: no geometry in view, or geometry that no light reaches.
+TEST(DefaultView, AnUnlitViewIsToldApartFromAnEmptyOne) {
+  const std::string dir = test::temp_dir("default_view_unlit");
+  test::write_file(dir + "/m.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+  test::write_file(dir + "/s.json", R"({"objects": [{"obj": "m.obj"}],
+    "lights": [{"type": "point", "position": [0, 0, -3], "intensity": [1, 1, 1]}]})");
+  const std::string render = "render -q " + dir + "/s.json --width 16 --height 16 -o " + dir + "/o.png ";
+  auto r = test::run_cli(render);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("of 256 camera rays hit it) but no light reaches"), std::string::npos) << r.err;
+  r = test::run_cli(render + "--eye 0,0,10 --look-at 0,0,20");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("the camera sees no geometry"), std::string::npos) << r.err;
+  r = test::run_cli(render + "--eye 0,0,-5");  // the lit side: no warning
+  EXPECT_EQ(r.err.find("only the background"), std::string::npos) << r.err;
+}
+
 // `--up` is a direction: scaled by a power of two anywhere in its range, it gives the same frame and the
 // same pixels; its range ends where the float frame would overflow or underflow.
 TEST(DefaultView, UpCountsByItsDirectionAcrossItsRange) {
