@@ -55,7 +55,7 @@ RenderSettings::Aovs parse_aovs(const std::string& list, const std::string& outp
   return aov;
 }
 
-// Pixels whose colour differs from the background: none means the camera saw no geometry.
+// Pixels whose colour differs from the background.
 std::size_t non_background_pixels(const Image& image, Vec3f background) {
   std::size_t n = 0;
   const std::size_t channels = image.channels.size();
@@ -63,6 +63,40 @@ std::size_t non_background_pixels(const Image& image, Vec3f background) {
     n += image.pixels[i] != background.x || image.pixels[i + 1] != background.y ||
          image.pixels[i + 2] != background.z;
   return n;
+}
+
+// Triangles whose corners are collinear (e1 × e2 = 0, in double from the float corners): no ray hits them.
+std::size_t zero_area_triangles(const TriangleMesh& mesh) {
+  std::size_t n = 0;
+  for (std::size_t t = 0; t < mesh.size(); ++t) {
+    const Vec3d v0(mesh.vertex(t, 0)), v1(mesh.vertex(t, 1)), v2(mesh.vertex(t, 2));
+    n += cross(v1 - v0, v2 - v0) == Vec3d{0, 0, 0} ? 1 : 0;
+  }
+  return n;
+}
+
+// An image of nothing but the background says why, by the camera rays that hit: none (the camera
+// looks past the geometry, or every triangle has zero area), or some (what they hit is unlit).
+void warn_if_only_background(const std::string& name, const Image& image, const Scene& scene,
+                             const RayCounts& rays) {
+  if (non_background_pixels(image, scene.background) != 0) return;
+  if (rays.primary_hits != 0) {
+    std::fprintf(stderr,
+                 "warning: %s: the image shows only the background colour: the camera sees geometry "
+                 "(%llu of %llu camera rays hit it) but no light reaches what it sees (check the lights, "
+                 "their intensity and the ambient colour)\n",
+                 name.c_str(), (unsigned long long)rays.primary_hits, (unsigned long long)rays.primary);
+  } else if (zero_area_triangles(scene.mesh) == scene.mesh.size()) {
+    std::fprintf(stderr,
+                 "warning: %s: the image shows only the background: the mesh's triangles (%zu) all have zero "
+                 "area (collinear corners), and no ray hits such a triangle\n",
+                 name.c_str(), scene.mesh.size());
+  } else {
+    std::fprintf(stderr,
+                 "warning: %s: the image shows only the background: the camera sees no geometry "
+                 "(try the default view, --view iso, or check --eye/--look-at)\n",
+                 name.c_str());
+  }
 }
 
 // --heatmap: each cost/bounces channel as a false-colour PNG beside the EXR, with a legend.
@@ -148,20 +182,7 @@ int run_render(RenderArgs& a) {
   const Image image = render_across_ranks(cluster(), scene, *accel, settings, stats, loads, bar.progress());
   bar.finish();                     // render() has drawn it at 100 %
   if (!cluster().root()) return 0;  // rank 0 has the image
-  if (non_background_pixels(image, scene.background) == 0) {
-    if (stats.rays.primary_hits == 0)
-      std::fprintf(stderr,
-                   "warning: %s: the image shows only the background: the camera sees no geometry "
-                   "(try the default view, --view iso, or check --eye/--look-at)\n",
-                   a.scene.c_str());
-    else
-      std::fprintf(stderr,
-                   "warning: %s: the image shows only the background colour: the camera sees geometry "
-                   "(%llu of %llu camera rays hit it) but no light reaches what it sees (check the lights, "
-                   "their intensity and the ambient colour)\n",
-                   a.scene.c_str(), (unsigned long long)stats.rays.primary_hits,
-                   (unsigned long long)stats.rays.primary);
-  }
+  warn_if_only_background(a.scene, image, scene, stats.rays);
 
   t = std::chrono::steady_clock::now();
   write_image(a.output, image,

@@ -335,6 +335,9 @@ constexpr float kMinSceneSize = 1e-4f;
 Scene checked_size(Scene scene, const std::string& path) {
   const auto [lo, hi] = scene.bounds();
   const float size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  if (size == 0)
+    throw InputError(path, 0,
+                     "the scene's triangles all lie at one point (0 across): there is nothing to render");
   if (size < kMinSceneSize) {
     char text[160];
     std::snprintf(text, sizeof text, "the scene is %g across, below %g, the smallest size rayvec renders",

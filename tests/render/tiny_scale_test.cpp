@@ -61,6 +61,12 @@ TEST(TinyScale, ScenesBelowTheOffsetRangeAreRefused) {
   test::write_file(dir + "/s.json", "{\"objects\": [{\"obj\": \"m.obj\", \"transform\": {\"scale\": 1e8}}]}");
   r = test::run_cli("render -q " + dir + "/s.json --width 8 --height 8 -o " + dir + "/out.png");
   EXPECT_EQ(r.status, 0) << r.err;  // 2e-4 across: scaled into the range by its transform
+  // A scene of one point cannot be scaled into the range: it is refused as empty, not as small.
+  test::write_file(dir + "/p.obj", "v 3 3 3\nv 3 3 3\nv 3 3 3\nf 1 2 3\n");
+  r = test::run_cli("render -q " + dir + "/p.obj --width 8 --height 8 -o " + dir + "/out.png");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("all lie at one point (0 across): there is nothing to render"), std::string::npos)
+      << r.err;
 }
 
 }  // namespace

@@ -152,6 +152,12 @@ TEST(DefaultView, AnUnlitViewIsToldApartFromAnEmptyOne) {
   EXPECT_NE(r.err.find("the camera sees no geometry"), std::string::npos) << r.err;
   r = test::run_cli(render + "--eye 0,0,-5");  // the lit side: no warning
   EXPECT_EQ(r.err.find("only the background"), std::string::npos) << r.err;
+  // collinear corners only: nothing to hit, whatever the view
+  test::write_file(dir + "/line.obj",
+                   "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nv 0 1 0\nv 0 2 0\nv 0 3 0\nf 4 5 6\n");
+  r = test::run_cli("render -q " + dir + "/line.obj --width 16 --height 16 -o " + dir + "/o.png");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("the mesh's triangles (2) all have zero area"), std::string::npos) << r.err;
 }
 
 // `--up` is a direction: scaled by a power of two anywhere in its range, it gives the same frame and the
