@@ -12,6 +12,7 @@
 #include "distributed/cluster.h"
 #include "io/atomic_file.h"
 #include "io/error_report.h"
+#include "io/text_file.h"
 
 namespace {
 
@@ -63,6 +64,10 @@ int main(int argc, char** argv) {
   rayvec::register_bench_rays_command(bench);
   rayvec::register_bench_obj_command(bench);
   rayvec::register_bench_visibility_command(bench);
+  if (const auto problem = rayvec::input_limit_problem()) {  // before any input is read
+    rayvec::report_error(*problem);
+    return cluster.finish(2);
+  }
   int status = cli.main(argc, argv);
   // Every command's output (and --help) ends here: a full disk or a closed pipe found only at the
   // final flush must not pass for success (`rayvec info > /dev/full`).

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <memory>
 
+#include "io/csv_fields.h"
 #include "io/input_error.h"
 #include "platform/large_buffer.h"
 
@@ -136,15 +137,34 @@ void TextFile::unmap() {
   text_ = {};
 }
 
-std::size_t max_input_bytes() {
+namespace {
+
+// RAYVEC_MAX_INPUT_MB's megabytes: 0 when unset or empty, nullopt when not 1 to 2^40 − 1 in decimal digits.
+std::optional<std::size_t> limit_from_environment() {
   const char* env = std::getenv("RAYVEC_MAX_INPUT_MB");
-  std::size_t mb = kDefaultLimitMb;
-  if (env && *env) {
-    char* end = nullptr;
-    const unsigned long long v = std::strtoull(env, &end, 10);
-    if (*end == '\0' && v > 0 && v < (1ull << 40)) mb = static_cast<std::size_t>(v);
+  if (!env || !*env) return 0;
+  std::size_t mb = 0, digits = 0;
+  for (const char* c = env; *c; ++c, ++digits) {
+    if (*c < '0' || *c > '9' || digits == 13) return std::nullopt;  // 2^40 has 13 digits
+    mb = mb * 10 + std::size_t(*c - '0');
   }
-  return mb * 1000000;
+  if (mb == 0 || mb >= (std::size_t(1) << 40)) return std::nullopt;
+  return mb;
+}
+
+}  // namespace
+
+std::size_t max_input_bytes() {
+  const std::optional<std::size_t> mb = limit_from_environment();
+  return (mb && *mb ? *mb : kDefaultLimitMb) * 1000000;
+}
+
+std::optional<std::string> input_limit_problem() {
+  if (limit_from_environment()) return std::nullopt;
+  return "RAYVEC_MAX_INPUT_MB: '" + printable(std::getenv("RAYVEC_MAX_INPUT_MB")) +
+         "' is not a number of megabytes (a whole number from 1 to 1099511627775, e.g. "
+         "RAYVEC_MAX_INPUT_MB=16000; unset it for the default " +
+         std::to_string(kDefaultLimitMb) + ")";
 }
 
 std::string read_text_file(const std::string& given) {

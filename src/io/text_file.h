@@ -3,6 +3,7 @@
 // `yes`. All of them end in a clear InputError instead of a hang or an out-of-memory kill.
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -12,6 +13,10 @@ namespace rayvec {
 // bytes) from the environment when set to a positive integer, else 4096 MB. Inputs that big are
 // far beyond any scene rayvec traces well (a 1M-triangle OBJ is about 60 MB).
 std::size_t max_input_bytes();
+// What is wrong with RAYVEC_MAX_INPUT_MB when it is set but not a whole number of megabytes from 1
+// to 2^40 − 1 (the message to print; every command checks it before it starts), else nothing:
+// max_input_bytes would take the default, against what the user asked.
+std::optional<std::string> input_limit_problem();
 
 // The whole file as text. Throws InputError(`path: cannot read: <reason>`) when it cannot be opened
 // or read (missing file, a directory, no permission). A UTF-8 byte-order mark is dropped (editors

@@ -236,6 +236,30 @@ TEST(MalformedInputs, MtlFilesHaveTheInputLimitAndTheNulCheck) {
   EXPECT_TRUE(no_output(dir, "out.png"));
 }
 
+// A limit that is not a number would silently be the default (the user meant another): refused
+// before the command starts, naming the variable.
+TEST(MalformedInputs, AnInputLimitThatIsNotANumberIsRefused) {
+  const std::string dir = test::temp_dir("malformed_limit_env");
+  test::write_file(dir + "/m.obj", kTri);
+  const std::string render = "render -q " + dir + "/m.obj --width 8 --height 8 -o " + dir + "/out.png";
+  for (const char* value : {"abc", "0", "-5", "1e3", " 5", "1099511627776", "99999999999999999999"}) {
+    setenv("RAYVEC_MAX_INPUT_MB", value, 1);
+    const auto r = test::run_cli(render);
+    unsetenv("RAYVEC_MAX_INPUT_MB");
+    EXPECT_EQ(r.status, 2) << value << ": " << r.err;
+    EXPECT_NE(r.err.find("RAYVEC_MAX_INPUT_MB: '" + std::string(value) + "' is not a number of megabytes"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(no_output(dir, "out.png")) << value;
+  }
+  for (const char* value : {"1", "16000", "1099511627775"}) {
+    setenv("RAYVEC_MAX_INPUT_MB", value, 1);
+    const auto r = test::run_cli(render);
+    unsetenv("RAYVEC_MAX_INPUT_MB");
+    EXPECT_EQ(r.status, 0) << value << ": " << r.err;
+  }
+}
+
 TEST(MalformedInputs, Utf8ByteOrderMarkIsIgnored) {
   // Without dropping the mark, "\xEF\xBB\xBFv" is an unknown keyword: vertex 1 would vanish and
   // every face index would shift by one.
