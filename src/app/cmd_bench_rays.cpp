@@ -300,8 +300,8 @@ void register_bench_rays_command(Command& bench) {
               "BVH builds timed (with --vs-embree: as many of Embree's after them); the median "
               "is reported, the last tree is traced (default 3)")
       .option("--bvh-width", o.width,
-              "children per BVH node: 4, 8 or 16; 0 = the default (AVX-512 and AVX2: 16 from 32768 "
-              "triangles up, else 8; AVX-512 on Intel: 16 at every size)")
+              "children per BVH node: 8 or 16 (the scalar ISA also 4); 0 = the default (AVX-512 and "
+              "AVX2: 16 from 32768 triangles up, else 8; AVX-512 on Intel: 16 at every size)")
       .option("--max-leaf", o.max_leaf, "tuning: most triangles per BVH leaf (0 = default)")
       .option("--leaf-block", o.leaf_block, "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)")
       .option("--merge-steps", o.merge_steps,
