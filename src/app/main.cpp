@@ -33,6 +33,14 @@ void install_signal_handlers() {
   std::signal(SIGXFSZ, SIG_IGN);
 }
 
+// Help (no command, -h, --help) and `info`, the runs that read no input file.
+bool reads_no_input(int argc, char** argv) {
+  if (argc < 2 || std::strcmp(argv[1], "info") == 0) return true;
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--help") == 0) return true;
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,7 +72,9 @@ int main(int argc, char** argv) {
   rayvec::register_bench_rays_command(bench);
   rayvec::register_bench_obj_command(bench);
   rayvec::register_bench_visibility_command(bench);
-  if (const auto problem = rayvec::input_limit_problem()) {  // before any input is read
+  // A malformed input limit stops every command that reads input before it starts; help and
+  // `info` (which shows the limit and the problem) still run.
+  if (const auto problem = rayvec::input_limit_problem(); problem && !reads_no_input(argc, argv)) {
     rayvec::report_error(*problem);
     return cluster.finish(2);
   }

@@ -255,9 +255,24 @@ TEST(MalformedInputs, AnInputLimitThatIsNotANumberIsRefused) {
   for (const char* value : {"1", "16000", "1099511627775"}) {
     setenv("RAYVEC_MAX_INPUT_MB", value, 1);
     const auto r = test::run_cli(render);
+    const auto info = test::run_cli("info");
     unsetenv("RAYVEC_MAX_INPUT_MB");
     EXPECT_EQ(r.status, 0) << value << ": " << r.err;
+    EXPECT_NE(info.out.find("input limit: " + std::string(value) + " MB (RAYVEC_MAX_INPUT_MB)"),
+              std::string::npos)
+        << info.out;
   }
+  // help and info read no input: they run, and info names the problem
+  setenv("RAYVEC_MAX_INPUT_MB", "abc", 1);
+  const auto help = test::run_cli("render --help");
+  const auto info = test::run_cli("info");
+  unsetenv("RAYVEC_MAX_INPUT_MB");
+  EXPECT_EQ(help.status, 0) << help.err;
+  EXPECT_EQ(info.status, 0) << info.err;
+  EXPECT_NE(info.out.find("input limit: 4096 MB; RAYVEC_MAX_INPUT_MB: 'abc' is not a number"),
+            std::string::npos)
+      << info.out;
+  EXPECT_NE(test::run_cli("info").out.find("input limit: 4096 MB (the default"), std::string::npos);
 }
 
 TEST(MalformedInputs, Utf8ByteOrderMarkIsIgnored) {
