@@ -24,6 +24,9 @@ std::string RenderStats::text() const {
               (unsigned long long)rays.primary, (unsigned long long)rays.shadow,
               (unsigned long long)rays.reflection, (unsigned long long)rays.refraction,
               (unsigned long long)rays.total());
+  s += format("camera rays that hit: %llu of %llu (%.1f %%)\n", (unsigned long long)rays.primary_hits,
+              (unsigned long long)rays.primary,
+              rays.primary ? 100.0 * double(rays.primary_hits) / double(rays.primary) : 0.0);
   s += format("rays/s: %.4g (%d threads)\n", rays_per_second(), threads);
   s += format("time: load %.3f s, build %.3f s, render %.3f s, write %.3f s\n", load_seconds, build_seconds,
               render_seconds, write_seconds);
@@ -35,14 +38,15 @@ std::string RenderStats::text() const {
 std::string RenderStats::json() const {
   return format(
       "{\n  \"rays\": {\"primary\": %llu, \"shadow\": %llu, \"reflection\": %llu, "
-      "\"refraction\": %llu, \"total\": %llu},\n"
+      "\"refraction\": %llu, \"total\": %llu, \"primary_hits\": %llu},\n"
       "  \"seconds\": {\"load\": %.6f, \"build\": %.6f, \"render\": %.6f, \"write\": %.6f, "
       "\"total\": %.6f, \"primary_thread\": %.6f, \"shading_thread\": %.6f},\n"
       "  \"rays_per_second\": %.6g,\n  \"threads\": %d\n}\n",
       (unsigned long long)rays.primary, (unsigned long long)rays.shadow, (unsigned long long)rays.reflection,
-      (unsigned long long)rays.refraction, (unsigned long long)rays.total(), load_seconds, build_seconds,
-      render_seconds, write_seconds, load_seconds + build_seconds + render_seconds + write_seconds,
-      primary_thread_seconds, shading_thread_seconds, rays_per_second(), threads);
+      (unsigned long long)rays.refraction, (unsigned long long)rays.total(),
+      (unsigned long long)rays.primary_hits, load_seconds, build_seconds, render_seconds, write_seconds,
+      load_seconds + build_seconds + render_seconds + write_seconds, primary_thread_seconds,
+      shading_thread_seconds, rays_per_second(), threads);
 }
 
 }  // namespace rayvec

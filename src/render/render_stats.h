@@ -33,7 +33,8 @@ struct RenderStats {
   double rays_per_second() const { return render_seconds > 0 ? double(rays.total()) / render_seconds : 0.0; }
   // Human-readable lines for --stats.
   std::string text() const;
-  // {"rays": {"primary": n, "shadow": n, "reflection": n, "refraction": n, "total": n},
+  // {"rays": {"primary": n, "shadow": n, "reflection": n, "refraction": n, "total": n,
+  //           "primary_hits": n},
   //  "seconds": {"load": s, "build": s, "render": s, "write": s, "total": s, ...}, ...}
   std::string json() const;
 };

@@ -25,10 +25,13 @@ TEST(MpiRender, ImageIsBitIdenticalToOneProcess) {
   ASSERT_EQ(a.pixels.size(), b.pixels.size());
   EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0);
   // The same rays, counted across the ranks; rank 0 alone prints (one "wrote" line).
-  const auto rays_line = [](const std::string& out) {
-    return out.substr(out.find("rays: "), out.find('\n', out.find("rays: ")) - out.find("rays: "));
+  const auto line = [](const std::string& out, const std::string& start) {
+    const std::size_t at = out.find(start);
+    return at == std::string::npos ? std::string() : out.substr(at, out.find('\n', at) - at);
   };
-  EXPECT_EQ(rays_line(one.out), rays_line(two.out));
+  EXPECT_EQ(line(one.out, "rays: "), line(two.out, "rays: "));
+  EXPECT_EQ(line(one.out, "camera rays that hit: "), line(two.out, "camera rays that hit: "));
+  EXPECT_NE(line(two.out, "camera rays that hit: "), "") << two.out;
   EXPECT_EQ(test::count_of(two.out, "wrote "), 1) << two.out;
   EXPECT_NE(two.out.find("ranks: 2; rays per rank: "), std::string::npos) << two.out;
   EXPECT_NE(two.out.find("load imbalance (slowest / mean): "), std::string::npos) << two.out;

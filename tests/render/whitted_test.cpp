@@ -46,6 +46,7 @@ TEST(Whitted, LambertPlaneUnderPointLightMatchesInverseSquareLaw) {
     }
   }
   EXPECT_EQ(stats.rays.primary, 64u * 48u);
+  EXPECT_EQ(stats.rays.primary_hits, 64u * 48u);  // the plane fills the image
   EXPECT_EQ(stats.rays.shadow, 64u * 48u);
   EXPECT_EQ(stats.rays.reflection, 0u);
   EXPECT_EQ(stats.rays.refraction, 0u);
