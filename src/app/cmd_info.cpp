@@ -37,42 +37,44 @@ void print_bvh_defaults(Isa isa, std::string_view vendor) {
 }  // namespace
 
 void register_info_command(CommandLine& cli) {
-  cli.command("info", "Show CPU features, the ISA rayvec picks and its defaults, threads, versions").run([] {
-    const CpuFeatures& f = cpu_features();
-    std::printf("rayvec %s\n", RAYVEC_VERSION);
-    std::printf("cpu: %s (%s)\n", f.brand.c_str(), f.vendor.c_str());
-    std::printf(
-        "cpu features: sse2=%d avx=%d avx2=%d fma=%d bmi2=%d avx512f=%d avx512dq=%d "
-        "avx512bw=%d avx512vl=%d avx512cd=%d\n",
-        f.sse2, f.avx, f.avx2, f.fma, f.bmi2, f.avx512f, f.avx512dq, f.avx512bw, f.avx512vl, f.avx512cd);
-    std::printf("os saves: ymm=%d zmm=%d\n", f.os_ymm, f.os_zmm);
-    std::printf("isa: %s (auto)\n", isa_name(best_isa()));
-    for (Isa isa : kAllIsas) {
-      const bool ok = isa_supported(isa);
-      std::printf("  %-7s %s", isa_name(isa), ok ? "supported" : "not supported");
-      if (ok)
-        std::printf(", %d floats per step, mt pre-test: %s", triangle_kernels(isa, Intersector::mt).width,
-                    mt_pretest_name(default_mt_pretest(isa, f.vendor)));
-      std::printf("\n");
-      if (ok) print_bvh_defaults(isa, f.vendor);
-    }
-    std::printf(
-        "bvh normals (mt): stored below %zu triangles while the tree fits %.0f bytes a triangle, "
-        "else formed per step\n",
-        kFormedNormalsFrom, kBvhBytesPerTriangle);
-    std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
-    const char* limit_env = std::getenv("RAYVEC_MAX_INPUT_MB");
-    if (const auto problem = input_limit_problem())
-      std::printf("input limit: %zu MB; %s, so every command that reads input refuses to start\n",
-                  max_input_bytes() / 1000000, problem->c_str());
-    else
-      std::printf(
-          "input limit: %zu MB (%s)\n", max_input_bytes() / 1000000,
-          limit_env && *limit_env ? "RAYVEC_MAX_INPUT_MB" : "the default; RAYVEC_MAX_INPUT_MB sets it");
-    std::printf("compiler: g++ %s, OpenMP %d\n", __VERSION__, _OPENMP);
-    print_cuda_info();
-    return 0;
-  });
+  cli.command("info", "Show CPU features, the ISA rayvec picks and its defaults, threads, versions")
+      .reads_no_input()
+      .run([] {
+        const CpuFeatures& f = cpu_features();
+        std::printf("rayvec %s\n", RAYVEC_VERSION);
+        std::printf("cpu: %s (%s)\n", f.brand.c_str(), f.vendor.c_str());
+        std::printf(
+            "cpu features: sse2=%d avx=%d avx2=%d fma=%d bmi2=%d avx512f=%d avx512dq=%d "
+            "avx512bw=%d avx512vl=%d avx512cd=%d\n",
+            f.sse2, f.avx, f.avx2, f.fma, f.bmi2, f.avx512f, f.avx512dq, f.avx512bw, f.avx512vl, f.avx512cd);
+        std::printf("os saves: ymm=%d zmm=%d\n", f.os_ymm, f.os_zmm);
+        std::printf("isa: %s (auto)\n", isa_name(best_isa()));
+        for (Isa isa : kAllIsas) {
+          const bool ok = isa_supported(isa);
+          std::printf("  %-7s %s", isa_name(isa), ok ? "supported" : "not supported");
+          if (ok)
+            std::printf(", %d floats per step, mt pre-test: %s", triangle_kernels(isa, Intersector::mt).width,
+                        mt_pretest_name(default_mt_pretest(isa, f.vendor)));
+          std::printf("\n");
+          if (ok) print_bvh_defaults(isa, f.vendor);
+        }
+        std::printf(
+            "bvh normals (mt): stored below %zu triangles while the tree fits %.0f bytes a triangle, "
+            "else formed per step\n",
+            kFormedNormalsFrom, kBvhBytesPerTriangle);
+        std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
+        const char* limit_env = std::getenv("RAYVEC_MAX_INPUT_MB");
+        if (const auto problem = input_limit_problem())
+          std::printf("input limit: %zu MB; %s, so every command that reads input refuses to start\n",
+                      max_input_bytes() / 1000000, problem->c_str());
+        else
+          std::printf(
+              "input limit: %zu MB (%s)\n", max_input_bytes() / 1000000,
+              limit_env && *limit_env ? "RAYVEC_MAX_INPUT_MB" : "the default; RAYVEC_MAX_INPUT_MB sets it");
+        std::printf("compiler: g++ %s, OpenMP %d\n", __VERSION__, _OPENMP);
+        print_cuda_info();
+        return 0;
+      });
 }
 
 }  // namespace rayvec

@@ -48,13 +48,20 @@ Command& Command::footer(const std::string& text) {
 }
 Command& Command::run(std::function<int()> action) {
   auto* app = &app_of(app_);
-  app->callback([action = std::move(action)]() { throw CLI::RuntimeError(action()); });
+  app->callback([this, action = std::move(action)]() {
+    if (reads_input_ && *input_check_) (*input_check_)();
+    throw CLI::RuntimeError(action());
+  });
+  return *this;
+}
+Command& Command::reads_no_input() {
+  reads_input_ = false;
   return *this;
 }
 Command& Command::subcommand(const std::string& name, const std::string& description) {
   CLI::App* sub = app_of(app_).add_subcommand(name, description);
   app_of(app_).require_subcommand(1);
-  children_.push_back(std::unique_ptr<Command>(new Command(sub)));
+  children_.push_back(std::unique_ptr<Command>(new Command(sub, input_check_)));
   return *children_.back();
 }
 
@@ -66,7 +73,7 @@ CommandLine::CommandLine(const std::string& name, const std::string& description
     : impl_(new Impl{CLI::App(description, name)}) {
   impl_->app.set_version_flag("--version", std::string(name) + " " + RAYVEC_VERSION);
   impl_->app.require_subcommand(1);
-  root_.reset(new Command(&impl_->app));
+  root_.reset(new Command(&impl_->app, &input_check_));
 }
 
 CommandLine::~CommandLine() = default;

@@ -12,6 +12,7 @@
 #include "distributed/cluster.h"
 #include "io/atomic_file.h"
 #include "io/error_report.h"
+#include "io/input_error.h"
 #include "io/text_file.h"
 
 namespace {
@@ -33,14 +34,6 @@ void install_signal_handlers() {
   std::signal(SIGXFSZ, SIG_IGN);
 }
 
-// Help (no command, -h, --help) and `info`, the runs that read no input file.
-bool reads_no_input(int argc, char** argv) {
-  if (argc < 2 || std::strcmp(argv[1], "info") == 0) return true;
-  for (int i = 1; i < argc; ++i)
-    if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--help") == 0) return true;
-  return false;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -58,6 +51,11 @@ int main(int argc, char** argv) {
   rayvec::CommandLine cli("rayvec",
                           "rayvec: a SoA/SIMD Möller–Trumbore ray tracer.\n"
                           "Run `rayvec COMMAND --help` for each command's options and examples.");
+  // A malformed input limit stops every command that reads input before it starts; help and
+  // `info` (which shows the limit and the problem) still run.
+  cli.check_before_input([] {
+    if (const auto problem = rayvec::input_limit_problem()) throw rayvec::InputError(*problem);
+  });
   rayvec::register_info_command(cli);
   rayvec::register_hits_command(cli);
   rayvec::register_visibility_command(cli);
@@ -72,12 +70,6 @@ int main(int argc, char** argv) {
   rayvec::register_bench_rays_command(bench);
   rayvec::register_bench_obj_command(bench);
   rayvec::register_bench_visibility_command(bench);
-  // A malformed input limit stops every command that reads input before it starts; help and
-  // `info` (which shows the limit and the problem) still run.
-  if (const auto problem = rayvec::input_limit_problem(); problem && !reads_no_input(argc, argv)) {
-    rayvec::report_error(*problem);
-    return cluster.finish(2);
-  }
   int status = cli.main(argc, argv);
   // Every command's output (and --help) ends here: a full disk or a closed pipe found only at the
   // final flush must not pass for success (`rayvec info > /dev/full`).
