@@ -135,8 +135,9 @@ Light read_light(const Reader& r, const json& j, const std::string& where) {
       if (j.contains(k)) r.fail(Reader::join(where, k), "belongs to point lights");
     if (!j.contains("direction")) r.fail(where + ".direction", "missing");
     const Vec3f d = r.vec3(j["direction"], where + ".direction");
-    if (!(largest_component(d) > 0)) r.fail(where + ".direction", "must not be zero");
-    if (!(largest_component(d) >= kMinDirection && largest_component(d) <= kMaxDirection))
+    const float size = largest_component(d);
+    if (!(size > 0)) r.fail(where + ".direction", "must not be zero");
+    if (!(size >= kMinDirection && size <= kMaxDirection))
       r.fail(where + ".direction",
              "needs its largest component between 1e-6 and 1e16 in magnitude (its length does not matter)");
     light.direction = normalize(d);
