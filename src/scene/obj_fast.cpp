@@ -13,6 +13,7 @@
 #include "platform/large_buffer.h"
 #include "scene/obj_chunk.h"
 #include "scene/obj_sample.h"
+#include "scene/polygon_triangulation.h"
 
 namespace rayvec {
 namespace {
@@ -169,20 +170,15 @@ std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const
   return material;
 }
 
-// tinyobjloader's quad split: along the shorter diagonal, (0,2) only when strictly shorter, with
-// its float arithmetic.
+// The quads' second split where quad_splits_at_0_2 says so (the chunks store every quad as
+// (0,1,2), (0,2,3)).
 void split_quads(const std::vector<uint32_t>& quads, ObjModel& m) {
   const auto& p = m.mesh.positions;
   for (const uint32_t q : quads) {
     auto& a = m.mesh.triangles[q];
     auto& b = m.mesh.triangles[q + 1];
-    const Vec3f v0 = p[a[0]], v1 = p[a[1]], v2 = p[a[2]], v3 = p[b[2]];
-    const float e02x = v2.x - v0.x, e02y = v2.y - v0.y, e02z = v2.z - v0.z;
-    const float e13x = v3.x - v1.x, e13y = v3.y - v1.y, e13z = v3.z - v1.z;
-    const float sqr02 = e02x * e02x + e02y * e02y + e02z * e02z;
-    const float sqr13 = e13x * e13x + e13y * e13y + e13z * e13z;
-    if (sqr02 < sqr13) continue;
-    // stored as (0,1,2), (0,2,3); tinyobjloader's other split is (0,1,3), (1,2,3)
+    if (quad_splits_at_0_2({p[a[0]], p[a[1]], p[a[2]], p[b[2]]})) continue;
+    // the other split: (0,1,3), (1,2,3)
     const auto resplit = [](auto& t0, auto& t1) {
       const auto c0 = t0[0], c1 = t0[1], c2 = t0[2], c3 = t1[2];
       t0 = {c0, c1, c3};

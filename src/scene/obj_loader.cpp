@@ -1,7 +1,8 @@
 // The only file that includes tiny_obj_loader.h (Debian's libtinyobjloader: header + shared
 // library, so no TINYOBJLOADER_IMPLEMENTATION here). Geometry comes from rayvec's fast reader
-// (obj_fast.h) where the file allows; otherwise tinyobjloader parses and triangulates, and rayvec
-// validates first (obj_scan.cpp) because tinyobjloader turns `nan` into 0 and drops bad faces quietly.
+// (obj_fast.h) where the file allows; otherwise tinyobjloader parses, and rayvec validates first
+// (obj_scan.cpp) because tinyobjloader turns `nan` into 0 and drops bad faces quietly. Both readers
+// triangulate polygons by triangulate_polygon (tinyobjloader's ear clipping drops concave parts).
 // Both number `usemtl` names through the same MtlReader.
 #include "scene/obj_loader.h"
 
@@ -18,6 +19,7 @@
 #include "scene/mtl_file.h"
 #include "scene/obj_fast.h"
 #include "scene/obj_scan.h"
+#include "scene/polygon_triangulation.h"
 
 namespace rayvec {
 namespace {
@@ -76,9 +78,11 @@ void split_warnings(const std::string& text, const std::string& path, std::vecto
   }
 }
 
-// tinyobjloader's shapes into the triangles, attributes and material ids of `model`.
+// tinyobjloader's shapes into the triangles, attributes and material ids of `model`; `large`: the
+// true corner counts of the faces whose count tinyobjloader wraps at 256 (check_obj_text).
 void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
-                      std::size_t material_count, const std::string& path, ObjModel& model) {
+                      const std::vector<LargeFace>& large, std::size_t material_count,
+                      const std::string& path, ObjModel& model) {
   const auto nv = static_cast<int>(attrib.vertices.size() / 3);
   const auto nn = static_cast<int>(attrib.normals.size() / 3);
   const auto nt = static_cast<int>(attrib.texcoords.size() / 2);
@@ -89,33 +93,55 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
     model.texcoords.push_back({attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]});
 
   // Shapes come out in file order (a new shape at each `o`, `g` or material change), so their
-  // concatenation numbers the triangles in file order.
+  // concatenation numbers the triangles in file order; a polygon's triangles come together, in
+  // triangulate_polygon's order.
+  std::vector<Vec3f> corner_positions;
+  std::vector<std::array<uint32_t, 3>> split;
+  std::size_t face = 0;  // among all shapes
+  auto next_large = large.begin();
+  const auto unexpected = [&] {
+    return InputError(path, 0, "tinyobjloader returned faces rayvec did not see");
+  };
   for (const tinyobj::shape_t& shape : shapes) {
     const auto& idx = shape.mesh.indices;
     std::size_t first = 0;  // index of the face's first corner
-    for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-      if (shape.mesh.num_face_vertices[f] != 3 || first + 3 > idx.size())
-        throw InputError(path, 0, "tinyobjloader returned a face that is not a triangle");
-      std::array<uint32_t, 3> tri{};
-      std::array<int32_t, 3> tri_n = kNoCornerIndices, tri_t = kNoCornerIndices;
-      for (int k = 0; k < 3; ++k) {
-        const tinyobj::index_t& c = idx[first + k];
-        // obj_scan.cpp has checked every index with its line; this guards against surprises.
-        if (c.vertex_index < 0 || c.vertex_index >= nv)
-          throw InputError(path, 0, "face vertex index out of range after triangulation");
-        tri[k] = static_cast<uint32_t>(c.vertex_index);
-        if (c.normal_index >= 0 && c.normal_index < nn) tri_n[k] = c.normal_index;
-        if (c.texcoord_index >= 0 && c.texcoord_index < nt) tri_t[k] = c.texcoord_index;
+    for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
+      std::size_t corners = shape.mesh.num_face_vertices[f];
+      if (next_large != large.end() && next_large->face == face) {
+        if (next_large->corners % 256 != corners) throw unexpected();
+        corners = (next_large++)->corners;
       }
-      first += 3;
-      model.mesh.triangles.push_back(tri);
-      model.triangle_normals.push_back(tri_n);
-      model.triangle_texcoords.push_back(tri_t);
+      if (corners < 3 || first + corners > idx.size()) throw unexpected();
+      // obj_scan.cpp has checked every index with its line; this guards against surprises.
+      corner_positions.clear();
+      for (std::size_t k = 0; k < corners; ++k) {
+        const int v = idx[first + k].vertex_index;
+        if (v < 0 || v >= nv) throw InputError(path, 0, "face vertex index out of range");
+        corner_positions.push_back(model.mesh.positions[static_cast<std::size_t>(v)]);
+      }
+      split.clear();
+      triangulate_polygon(corner_positions, split);
       const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
-      model.triangle_material.push_back(
-          material >= 0 && material < static_cast<int>(material_count) ? material : -1);
+      for (const std::array<uint32_t, 3>& corner : split) {
+        std::array<uint32_t, 3> tri{};
+        std::array<int32_t, 3> tri_n = kNoCornerIndices, tri_t = kNoCornerIndices;
+        for (int k = 0; k < 3; ++k) {
+          const tinyobj::index_t& c = idx[first + corner[k]];
+          tri[k] = static_cast<uint32_t>(c.vertex_index);
+          if (c.normal_index >= 0 && c.normal_index < nn) tri_n[k] = c.normal_index;
+          if (c.texcoord_index >= 0 && c.texcoord_index < nt) tri_t[k] = c.texcoord_index;
+        }
+        model.mesh.triangles.push_back(tri);
+        model.triangle_normals.push_back(tri_n);
+        model.triangle_texcoords.push_back(tri_t);
+        model.triangle_material.push_back(
+            material >= 0 && material < static_cast<int>(material_count) ? material : -1);
+      }
+      first += corners;
     }
+    if (first != idx.size()) throw unexpected();
   }
+  if (next_large != large.end()) throw unexpected();
   // ObjModel: a kind no face gives leaves its array empty
   const auto drop_if_unused = [](std::vector<std::array<int32_t, 3>>& v) {
     if (std::all_of(v.begin(), v.end(), [](const auto& idx) { return idx == kNoCornerIndices; }))
@@ -150,12 +176,13 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
   clock.fast = !options.reference && load_obj_fast(text, threads, load_mtl, model, warn, err);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
+  std::vector<LargeFace> large_faces;
   if (!clock.fast) {
     const double before_check = seconds_since(t0);
-    check_obj_text(text, path);
+    large_faces = check_obj_text(text, path);
     clock.check = seconds_since(t0) - before_check;
     std::istringstream in{std::string(text)};
-    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, true))
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, false))
       throw InputError(path, 0, "cannot parse: " + err);
   }
   clock.parse = seconds_since(t0) - clock.check;
@@ -164,7 +191,7 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
   split_warnings(warn, path, model.warnings);
   if (!err.empty()) split_warnings(err, path, model.warnings);  // e.g. MTL problems on success
   model.materials = std::move(mtl_reader.read);
-  if (!clock.fast) convert_geometry(attrib, shapes, materials.size(), path, model);
+  if (!clock.fast) convert_geometry(attrib, shapes, large_faces, materials.size(), path, model);
   clock.convert = seconds_since(t0);
   if (times) *times = clock;
   if (model.mesh.triangles.empty())

@@ -128,7 +128,8 @@ struct ForwardRef {
 const char* const kKindNames[] = {"vertex", "texture coordinate", "normal"};
 const char* const kKindPlurals[] = {"vertices", "texture coordinates", "normals"};
 
-void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRef>& forward,
+// Returns the face's corner count.
+long check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRef>& forward,
                 const std::string& path, std::size_t line_no) {
   long corners = 0;
   for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
@@ -160,6 +161,7 @@ void check_face(std::string_view rest, const Counts& seen, std::vector<ForwardRe
   }
   if (corners < 3)
     throw InputError(path, line_no, "a face needs at least 3 corners, found " + std::to_string(corners));
+  return corners;
 }
 
 }  // namespace
@@ -178,8 +180,10 @@ bool exponent_too_long(std::string_view token) {
   return digits > std::size_t(kMaxExponentDigits);
 }
 
-void check_obj_text(std::string_view text, const std::string& path) {
+std::vector<LargeFace> check_obj_text(std::string_view text, const std::string& path) {
   Counts seen;
+  std::vector<LargeFace> large;
+  std::size_t faces = 0;
   std::vector<ForwardRef> forward;
   // Lines end as tinyobjloader ends them (LF, CRLF or a lone CR, as old Mac files have): with LF
   // only, a CR-only file would be one line here and its later lines would go unchecked.
@@ -199,7 +203,9 @@ void check_obj_text(std::string_view text, const std::string& path) {
       check_coordinates(rest, 1, 1, "vt", path, line_no);
       ++seen.vt;
     } else if (keyword == "f") {
-      check_face(rest, seen, forward, path, line_no);
+      const long corners = check_face(rest, seen, forward, path, line_no);
+      if (corners > kMaxTinyobjCorners) large.push_back({faces, static_cast<uint32_t>(corners)});
+      ++faces;
     } else if (keyword == "vw") {
       check_skin_weights(rest, path, line_no);
     }
@@ -215,6 +221,7 @@ void check_obj_text(std::string_view text, const std::string& path) {
                            " is out of range: the file defines " + std::to_string(total) + " " +
                            kKindPlurals[ref.kind]);
   }
+  return large;
 }
 
 }  // namespace rayvec

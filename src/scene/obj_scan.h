@@ -3,15 +3,27 @@
 // unparsable text) in a `v` line as 0.0, skips faces with out-of-range indices (quads) or keeps them
 // (triangles) with only a global warning. One linear pass over the text; no allocation per line.
 #pragma once
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rayvec {
 
-// tinyobjloader triangulates a polygon by ear clipping in worse than quadratic time: 10^4 corners
-// take 0.3 s, 10^5 corners 40 s, so a single `f` line of 10^6 corners would hang the loader.
-// Faces with more corners than this are rejected before tinyobjloader sees them.
+// Ear clipping (triangulate_polygon) takes up to quadratic time in a face's corners: a concave
+// face of 10^4 corners takes a tenth of a second, so a single `f` line of 10^6 would hang the
+// loader. Faces with more corners than this are rejected before either reader sees them.
 inline constexpr long kMaxFaceCorners = 10000;
+
+// tinyobjloader counts a face's corners in an unsigned char (num_face_vertices); a face with more
+// than kMaxTinyobjCorners corners is listed with its true count, by its place among the file's
+// `f` lines (0-based).
+inline constexpr long kMaxTinyobjCorners = 255;
+struct LargeFace {
+  std::size_t face;
+  uint32_t corners;
+};
 
 // The most digits the exponent of a number may have, leading zeros not counted, on the lines
 // tinyobjloader reads numbers from (`v`, `vn`, `vt`, `vw`, `t`). Every float is written with two
@@ -29,7 +41,8 @@ bool exponent_too_long(std::string_view token);
 // (`f`) with fewer than 3 corners; a face index of 0, one that is not an integer, or one that refers to a
 // vertex, normal or texture coordinate that does not exist (negative indices are relative, as in the OBJ
 // specification); a face with more than kMaxFaceCorners corners; a number whose exponent has more than
-// kMaxExponentDigits digits on a line tinyobjloader reads numbers from.
-void check_obj_text(std::string_view text, const std::string& path);
+// kMaxExponentDigits digits on a line tinyobjloader reads numbers from. Returns the faces of more
+// than kMaxTinyobjCorners corners.
+std::vector<LargeFace> check_obj_text(std::string_view text, const std::string& path);
 
 }  // namespace rayvec

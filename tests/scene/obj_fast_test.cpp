@@ -131,6 +131,10 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
   const std::string quad = "v 0 0 0\nv 3 0 0\nv 3 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 3 1\nv 0 3 1\n";
   // taken by the fast reader
   EXPECT_TRUE(same_on("quads", quad + "f 1 2 3 4\nf 5 6 7 8\nf 4 3 2 1\n"));
+  // concave quads (arrowheads): split from the reflex corner, whichever corner that is
+  EXPECT_TRUE(same_on("concave_quads",
+                      "v 0 0 0\nv 10 -1 0\nv 5 0 0\nv 10 1 0\n"
+                      "f 1 2 3 4\nf 2 3 4 1\nf 4 3 2 1\nf 3 4 1 2\n"));
   EXPECT_TRUE(same_on("relative", quad + "f -4 -3 -2\nv 9 9 9\nf -1 -2 -3 -4\nf 1 2 -1\n"));
   EXPECT_TRUE(same_on("attributes", quad + "vt 0.5\nvt .25 +.75 7\nvn 0 0 1\nvn -0 1e-3 1E2\n"
                                            "f 1/1 2/2 3/1\nf 1//1 2//2 3//-1\nf 1/-1/1 2/2/2 3/1/1 4/2/2\n"));

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,64 @@ TEST(ObjLoader, PentagonBecomesThreeTrianglesCoveringIt) {
     total += area(m.mesh, t);
   }
   EXPECT_NEAR(total, 7.5, 1e-6);
+}
+
+// Twice the area vector of the polygon `corners` (rows of m's positions), by Newell's method.
+Vec3d newell(const TriangleMesh& m, const std::vector<uint32_t>& corners) {
+  Vec3d n{};
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const Vec3d a(m.positions[corners[i]]), b(m.positions[corners[(i + 1) % corners.size()]]);
+    n += cross(a, b);
+  }
+  return n;
+}
+
+TEST(ObjLoader, AConcavePolygonWithABridgedHoleKeepsItsHole) {
+  // assimp's ring: 66 corners, the outer circle and the hole joined along a doubled edge.
+  // tinyobjloader's own ear clipping made 44 triangles covering part of the hole; both readers now
+  // give 64 triangles, all facing the polygon's side, whose areas add up to the ring's.
+  const ObjModel m = load_obj(kData + "/malformed/assimp/concave_polygon.obj");
+  ASSERT_EQ(m.mesh.size(), 64u);
+  std::vector<uint32_t> corners;
+  const std::string text = test::read_file(kData + "/malformed/assimp/concave_polygon.obj");
+  const std::size_t f = text.find("\nf ");
+  ASSERT_NE(f, std::string::npos);
+  std::istringstream face(text.substr(f + 3, text.find('\n', f + 1) - f - 3));
+  for (std::string token; face >> token;) corners.push_back(static_cast<uint32_t>(std::stoul(token) - 1));
+  ASSERT_EQ(corners.size(), 66u);
+  const Vec3d normal = newell(m.mesh, corners);
+  double total = 0;
+  for (std::size_t t = 0; t < m.mesh.size(); ++t) {
+    const Vec3d a(m.mesh.vertex(t, 0)), b(m.mesh.vertex(t, 1)), c(m.mesh.vertex(t, 2));
+    const Vec3d n = cross(b - a, c - a);
+    EXPECT_GE(dot(n, normal), 0.0) << "triangle " << t << " faces away from the polygon";
+    total += length(n);
+  }
+  EXPECT_NEAR(total, length(normal), 1e-4 * length(normal));
+  // the ring's hole is open: its area is well below the outer circle's
+  double outer = 0;
+  for (const Vec3f& p : m.mesh.positions)
+    outer = std::max(outer, double(length(p - m.mesh.positions[corners[0]])));
+  EXPECT_LT(0.5 * length(normal), 0.5 * M_PI * outer * outer);
+}
+
+TEST(ObjLoader, PolygonsOfMoreThan255CornersKeepEveryCorner) {
+  // tinyobjloader counts a face's corners in a byte; a 300-gon must still give 298 triangles
+  std::string obj;
+  for (int k = 0; k < 300; ++k)
+    obj += "v " + std::to_string(std::cos(k * 2 * M_PI / 300)) + " " +
+           std::to_string(std::sin(k * 2 * M_PI / 300)) + " 0\n";
+  obj += "f 1 2 3\nf";
+  for (int k = 1; k <= 300; ++k) obj += " " + std::to_string(k);
+  obj += "\nf 1 2 3 4 5\n";
+  const std::string path = test::temp_dir("obj_large_face") + "/large.obj";
+  test::write_file(path, obj);
+  const ObjModel m = load_obj(path);
+  ASSERT_EQ(m.mesh.size(), 1u + 298u + 3u);
+  double total = 0;
+  for (std::size_t t = 1; t <= 298; ++t) total += area(m.mesh, t);
+  EXPECT_NEAR(total, 150 * std::sin(2 * M_PI / 300), 1e-4);  // the regular 300-gon's area
+  for (uint32_t corner : m.mesh.triangles.back()) EXPECT_LT(corner, 5u);
 }
 
 TEST(ObjLoader, ReadsMaterialsFromTheMtl) {
