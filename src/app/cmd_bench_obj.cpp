@@ -45,7 +45,7 @@ void register_bench_obj_command(Command& bench) {
           "error pre-scan, then tinyobjloader), `fast-1` and `fast-2` (rayvec's reader on 1 and 2\n"
           "threads). Prints the seconds of each phase of the fastest load and the file's megabytes\n"
           "(10^6 bytes) per second of the whole load, and the reader that loaded it. `fast reader:\n"
-          "no` means the file lies outside the fast reader's subset (e.g. polygons of 5+ corners)\n"
+          "no` means the file lies outside the fast reader's subset (e.g. `l` or `p` lines)\n"
           "and every way used tinyobjloader.\n"
           "Example (the 1M-triangle sphere of docs/benchmarks.md):\n"
           "  python3 scripts/make_bumpy_sphere.py sphere1m.obj\n"

@@ -162,22 +162,20 @@ class ChunkParser {
   }
 
   bool face_line(Cursor& in) {
-    std::array<Corner, 4> corners;
-    int n = 0;
+    corners_.clear();
     for (;;) {
       in.skip_blanks();
       if (in.at_line_end()) break;
-      if (n == 4 || !corner(in, corners[n])) return false;
-      ++n;
+      // a face too large is an error, which the reference path reports with its line
+      if (corners_.size() == std::size_t(kMaxFaceCorners)) return false;
+      if (!corner(in, corners_.emplace_back())) return false;
     }
+    const std::size_t n = corners_.size();
     if (n < 3) return false;
-    if (n == 4) {
-      c_.quads.push_back(static_cast<uint32_t>(c_.triangles.size()));
-      triangle(corners[0], corners[1], corners[2]);
-      triangle(corners[0], corners[2], corners[3]);
-    } else {
-      triangle(corners[0], corners[1], corners[2]);
-    }
+    const auto first = static_cast<uint32_t>(c_.triangles.size());
+    if (n == 4) c_.quads.push_back(first);
+    if (n > 4) c_.polygons.push_back({first, static_cast<uint32_t>(n)});
+    for (std::size_t i = 1; i + 1 < n; ++i) triangle(corners_[0], corners_[i], corners_[i + 1]);
     return in.next_line();
   }
 
@@ -250,6 +248,7 @@ class ChunkParser {
   }
 
   ObjChunk& c_;
+  std::vector<Corner> corners_;  // the face being read; kept for its capacity
 };
 
 }  // namespace

@@ -1,9 +1,9 @@
 // parse_obj_chunk: rayvec's fast OBJ tokenizer for one piece of a file (a run of whole lines), the
 // first stage of load_obj_fast (obj_fast.h). It accepts only a strict subset of OBJ whose meaning is
-// certain to match tinyobjloader's — v/vn/vt with plain decimal numbers, triangles and quads with
-// `a`, `a/b`, `a//c` or `a/b/c` corners, usemtl/mtllib/g/o/s/t lines, comments — and reports
-// anything else (an error, a polygon of 5 or more corners, `l`/`p`/`vw` lines, lone CR line ends)
-// as "not mine", so that the caller hands the whole file to the reference path instead.
+// certain to match tinyobjloader's — v/vn/vt with plain decimal numbers, faces of 3 to
+// kMaxFaceCorners corners with `a`, `a/b`, `a//c` or `a/b/c` corners, usemtl/mtllib/g/o/s/t lines,
+// comments — and reports anything else (an error, `l`/`p`/`vw` lines, lone CR line ends) as "not
+// mine", so that the caller hands the whole file to the reference path instead.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -38,6 +38,12 @@ struct ObjChunk {
   // Quads are stored as the triangles (0,1,2), (0,2,3); the first one's index is listed here for
   // the caller to choose the diagonal once every position is known.
   std::vector<uint32_t> quads;
+  // Polygons of 5 or more corners are stored as their fan (0,i,i+1), n − 2 triangles from `first`,
+  // for the caller to cut them by triangulate_polygon once every position is known.
+  struct Polygon {
+    uint32_t first, corners;
+  };
+  std::vector<Polygon> polygons;
   std::array<std::vector<uint32_t>, 3> relative;    // per kind (v, vt, vn): slots 3 * triangle + corner
   std::array<int64_t, 3> lowest_relative{0, 0, 0};  // per kind: the smallest relative value stored
   // per kind: the largest (1-based index - elements of that kind in the chunk before the line); a

@@ -190,6 +190,43 @@ void split_quads(const std::vector<uint32_t>& quads, ObjModel& m) {
   }
 }
 
+// The corners of the polygon stored as the fan of n − 2 triangles from `first`: (c0,c1,c2),
+// (c0,c2,c3), ...
+template <typename T>
+void fan_corners(const std::vector<std::array<T, 3>>& tris, uint32_t first, uint32_t n, std::vector<T>& out) {
+  out.assign({tris[first][0], tris[first][1]});
+  for (uint32_t j = 0; j + 2 < n; ++j) out.push_back(tris[first + j][2]);
+}
+
+// Rewrites the fan from `first` as the triangles `cut` (triples of corner positions).
+template <typename T>
+void recut(std::vector<std::array<T, 3>>& tris, uint32_t first, const std::vector<T>& corners,
+           const std::vector<std::array<uint32_t, 3>>& cut) {
+  for (std::size_t j = 0; j < cut.size(); ++j)
+    tris[first + j] = {corners[cut[j][0]], corners[cut[j][1]], corners[cut[j][2]]};
+}
+
+// The polygons' fans cut as triangulate_polygon cuts them, as the reference path does.
+void triangulate_polygons(const std::vector<ObjChunk::Polygon>& polygons, ObjModel& m) {
+  std::vector<uint32_t> corners;
+  std::vector<int32_t> attribute;
+  std::vector<Vec3f> positions;
+  std::vector<std::array<uint32_t, 3>> cut;
+  for (const ObjChunk::Polygon& p : polygons) {
+    fan_corners(m.mesh.triangles, p.first, p.corners, corners);
+    positions.clear();
+    for (uint32_t c : corners) positions.push_back(m.mesh.positions[c]);
+    cut.clear();
+    triangulate_polygon(positions, cut);
+    recut(m.mesh.triangles, p.first, corners, cut);
+    for (auto* attributes : {&m.triangle_normals, &m.triangle_texcoords}) {
+      if (attributes->empty()) continue;
+      fan_corners(*attributes, p.first, p.corners, attribute);
+      recut(*attributes, p.first, attribute, cut);
+    }
+  }
+}
+
 // Gives every chunk's corner index array of one kind its -1 entries when some chunk has that kind
 // and this one has not (ObjChunk keeps such an array empty), so the joined array is either empty
 // or one entry per triangle.
@@ -248,6 +285,7 @@ bool load_obj_pieces(std::string_view text, const ObjSample& sample,
   fill_corner_indices(chunks, &ObjChunk::triangle_normals);
   fill_corner_indices(chunks, &ObjChunk::triangle_texcoords);
   std::vector<uint32_t> quads;
+  std::vector<ObjChunk::Polygon> polygons;
   for (std::size_t i = 0; i < chunks.size(); ++i) {
     ObjChunk& c = chunks[i];
     for (uint32_t slot : c.relative[0])
@@ -257,6 +295,8 @@ bool load_obj_pieces(std::string_view text, const ObjSample& sample,
     for (uint32_t slot : c.relative[2])
       c.triangle_normals[slot / 3][slot % 3] += static_cast<int32_t>(at[i].items[2]);
     for (uint32_t q : c.quads) quads.push_back(q + static_cast<uint32_t>(at[i].triangles));
+    for (ObjChunk::Polygon p : c.polygons)
+      polygons.push_back({p.first + static_cast<uint32_t>(at[i].triangles), p.corners});
     append(out.mesh.positions, c.positions);
     append(out.normals, c.normals);
     append(out.texcoords, c.texcoords);
@@ -265,6 +305,7 @@ bool load_obj_pieces(std::string_view text, const ObjSample& sample,
     append(out.triangle_texcoords, c.triangle_texcoords);
   }
   split_quads(quads, out);
+  triangulate_polygons(polygons, out);
   out.materials = std::move(model.materials);
   out.warnings = std::move(model.warnings);
   model = std::move(out);

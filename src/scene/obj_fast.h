@@ -1,10 +1,10 @@
 // load_obj_fast: rayvec's own OBJ geometry reader, the fast path of load_obj (a fifteenth of the
 // CPU time of the pre-scan with tinyobjloader; see benchmarks.md#decision-obj-fast-path). It reads the
 // strict subset of obj_chunk.h, in pieces on `threads` threads when asked, and builds exactly the ObjModel
-// that tinyobjloader's reading gives (same triangles and their order, quad diagonals, attribute
-// indices, material ids, warnings), except that coordinates are correctly rounded where
-// tinyobjloader's own conversion can be one float step off. Anything outside the subset — every
-// file with an error among them — goes back to the reference path, which reports it.
+// that the reference path (tinyobjloader's reading, polygons cut by triangulate_polygon) gives (same
+// triangles and their order, attribute indices, material ids, warnings), except that coordinates are
+// correctly rounded where tinyobjloader's own conversion can be one float step off. Anything outside the
+// subset — every file with an error among them — goes back to the reference path, which reports it.
 #pragma once
 #include <functional>
 #include <map>

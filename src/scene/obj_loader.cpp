@@ -116,7 +116,8 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
       corner_positions.clear();
       for (std::size_t k = 0; k < corners; ++k) {
         const int v = idx[first + k].vertex_index;
-        if (v < 0 || v >= nv) throw InputError(path, 0, "face vertex index out of range");
+        if (v < 0 || v >= nv)
+          throw InputError(path, 0, "tinyobjloader returned a face vertex index out of range");
         corner_positions.push_back(model.mesh.positions[static_cast<std::size_t>(v)]);
       }
       split.clear();

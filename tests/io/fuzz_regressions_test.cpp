@@ -55,20 +55,20 @@ TEST(FuzzRegressions, ExponentsOfMoreThanTwoDigitsAreRejectedOnEveryLineTinyobjl
   // tinyobjloader's exponent check lets 2147483648 and 2147483649 overflow its int (UBSan:
   // signed-integer-overflow), and from 10^442 on it multiplies a zero mantissa by infinity: NaN
   // where the text means 0 (`v 0e1000` became a NaN vertex). Each line sends the file down
-  // tinyobjloader's path (a `vw` or `t` line, or a polygon of 5 corners); the last two go through
-  // the fast reader, which must leave them to that path and so give the same error.
+  // tinyobjloader's path (a `vw`, `t` or `l` line); the last two go through the fast reader,
+  // which must leave them to that path and so give the same error.
   const std::string dir = test::temp_dir("fuzz_exponent");
   const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 2 0\n";
-  const std::string pentagon = vertices + "f 1 2 3 4 5\n", triangle = vertices + "f 1 2 3\n";
+  const std::string polyline = vertices + "l 1 2 3 4 5\n", triangle = vertices + "f 1 2 3\n";
   const std::tuple<std::string, const char*, const char*> cases[] = {
-      {pentagon, "v 0e2147483649 0 0\n", "0e2147483649"},
-      {pentagon, "vn 0 0 0E+0002147483648\n", "0E+0002147483648"},
-      {pentagon, "vt 0 -.5e-2147483649\n", "-.5e-2147483649"},
-      {pentagon, "vw 0 1 0e2147483649\n", "0e2147483649"},
-      {pentagon, "t crease 0/1/0 1.0e2147483649\n", "1.0e2147483649"},
-      {pentagon, "v 0 0 0 1 0e9999999999 1\n", "0e9999999999"},
-      {pentagon, "v 0e1000 0 0\n", "0e1000"},
-      {pentagon, "vn 0 0 1e-100\n", "1e-100"},
+      {polyline, "v 0e2147483649 0 0\n", "0e2147483649"},
+      {polyline, "vn 0 0 0E+0002147483648\n", "0E+0002147483648"},
+      {polyline, "vt 0 -.5e-2147483649\n", "-.5e-2147483649"},
+      {polyline, "vw 0 1 0e2147483649\n", "0e2147483649"},
+      {polyline, "t crease 0/1/0 1.0e2147483649\n", "1.0e2147483649"},
+      {polyline, "v 0 0 0 1 0e9999999999 1\n", "0e9999999999"},
+      {polyline, "v 0e1000 0 0\n", "0e1000"},
+      {polyline, "vn 0 0 1e-100\n", "1e-100"},
       {triangle, "v 0e1000 0 0\n", "0e1000"},
       {triangle, "vt 0 0e0000001000000041\n", "0e0000001000000041"}};
   for (const auto& [faces, line, token] : cases) {
@@ -78,7 +78,8 @@ TEST(FuzzRegressions, ExponentsOfMoreThanTwoDigitsAreRejectedOnEveryLineTinyobjl
                   "' has an exponent of more than 2 digits (a float needs at most 2: 3.4e38 to 1.4e-45)")
         << line;
   }
-  test::write_file(dir + "/m.obj", pentagon + "v 0 0 1e000000000003\nvt 0.5 1.4e-45\nvn 0 0 -3.4E+38\n");
+  test::write_file(dir + "/m.obj",
+                   vertices + "f 1 2 3 4 5\nv 0 0 1e000000000003\nvt 0.5 1.4e-45\nvn 0 0 -3.4E+38\n");
   EXPECT_NO_THROW(load_obj(dir + "/m.obj"));  // two digits, leading zeros not counted
 }
 

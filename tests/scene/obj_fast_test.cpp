@@ -150,10 +150,16 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
                       "# c\n\n  \t\nv 0 0 0 1 0 0\r\nv\t1 0 0\t\r\nv 0 1 0 # c\n f 1 2 3 \t\n"
                       "vp 1 2\nf 1 2 3"));
   EXPECT_TRUE(same_on("two_digit_exponents", quad + "vt 0 1.4e-45\nvn 0 0 -3.4E+38\nf 1/1/1 2/1/1 3/1/1\n"));
+  // polygons: cut by the same triangulate_polygon on both paths, attributes following their corners
+  EXPECT_TRUE(
+      same_on("polygons", quad + "vt 0 0\nvt 1 0\nvn 0 0 1\nf 1 2 3 4 5\nf 1/1 2/2 3/1 7/2 8/1\n"
+                                 "f -1//1 -2//1 -3//1 -4//1 -5//1 -6//1\nusemtl a\nf 8 7 6 5 4 3 2 1\n"));
+  EXPECT_TRUE(same_on("keyhole",
+                      "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 0\nv 1 1 0\nv 1 3 0\nv 3 3 0\nv 3 1 0\n"
+                      "f 1 2 3 4 1 5 6 7 8 5\n"));
   // handed to the reference, which must still give its own result or error
   const std::pair<const char*, std::string> handed[] = {
       {"forward", "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"},
-      {"pentagon", quad + "f 1 2 3 4 5\n"},
       {"lone_cr", quad + "f 1 2 3\rf 2 3 4\r"},
       {"lines", quad + "l 1 2\nf 1 2 3\n"},
       {"bad_index", quad + "f 1 2 9\n"},
