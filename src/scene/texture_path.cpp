@@ -23,6 +23,36 @@ fs::path absolute_normal(const fs::path& p) {
   return (ec ? p : a).lexically_normal();
 }
 
+bool same_ignoring_ascii_case(const std::string& a, const std::string& b) {
+  const auto lower = [](unsigned char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : char(c); };
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [&](char x, char y) { return lower(x) == lower(y); });
+}
+
+// `rel` under `base`, each component that does not exist as written matched by the entry of its
+// directory whose name differs only in ASCII case (the first in name order, so the choice does
+// not depend on the directory's order): textures named on a case-insensitive file system
+// (`Textures\Wood.JPG` for textures/wood.jpg). Empty when some component has no such entry.
+fs::path find_ignoring_case(const fs::path& base, const fs::path& rel) {
+  fs::path at = base;
+  for (const fs::path& part : rel) {
+    if (part.empty() || part == ".") continue;
+    if (part == ".." || path_exists(at / part)) {
+      at /= part;
+      continue;
+    }
+    std::error_code ec;
+    std::string best;
+    for (fs::directory_iterator it(at, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (same_ignoring_ascii_case(name, part.string()) && (best.empty() || name < best)) best = name;
+    }
+    if (best.empty()) return {};
+    at /= best;
+  }
+  return at;
+}
+
 }  // namespace
 
 std::string resolve_texture_path(const std::string& name, const std::string& mtl_dir) {
@@ -39,6 +69,12 @@ std::string resolve_texture_path(const std::string& name, const std::string& mtl
   if (path_exists(resolved)) return resolved.string();
   const fs::path file_name = guess.filename();
   if (!file_name.empty() && path_exists(dir / file_name)) return absolute_normal(dir / file_name).string();
+  for (const auto& [base, rel] :
+       {std::pair<fs::path, fs::path>{guess.is_absolute() ? fs::path() : dir, guess}, {dir, file_name}}) {
+    if (base.empty() || rel.empty()) continue;
+    const fs::path found = find_ignoring_case(base, rel.relative_path());
+    if (!found.empty()) return absolute_normal(found).string();
+  }
   return resolved.string();
 }
 

@@ -9,8 +9,10 @@ namespace rayvec {
 // MTL file in directory `mtl_dir`: a relative name is relative to the MTL file; Windows separators
 // (`.\tex\a.jpg`) are read as `/` unless a file with the literal name exists; when the named file
 // does not exist but a file with its last component does in mtl_dir (an exporter's absolute path
-// from another machine, `C:\models\a.jpg`), that file. Returns an absolute, normalized path (the
-// best guess when nothing exists, for the message).
+// from another machine, `C:\models\a.jpg`), that file; failing all of these, the same two names
+// with each missing component matched regardless of ASCII case (`Wood.JPG` for wood.jpg, as a
+// case-insensitive file system would). Returns an absolute, normalized path (the best guess when
+// nothing exists, for the message).
 std::string resolve_texture_path(const std::string& name, const std::string& mtl_dir);
 
 // Why the texture at `path` cannot be used, or "" when it can: it does not exist, cannot be looked

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -103,6 +104,7 @@ TEST(MtlValidate, UnusedNiZeroIsQuiet) {
 
 TEST(TexturePath, WindowsSeparatorsAbsolutePathsAndQuotesResolve) {
   const std::string dir = test::temp_dir("texture_path");
+  std::filesystem::create_directories(dir + "/sub dir");
   test::write_file(dir + "/sub dir/a b.png", "x");
   test::write_file(dir + "/plain.png", "x");
   EXPECT_EQ(resolve_texture_path(".\\sub dir\\a b.png", dir), dir + "/sub dir/a b.png");
@@ -112,6 +114,25 @@ TEST(TexturePath, WindowsSeparatorsAbsolutePathsAndQuotesResolve) {
   EXPECT_EQ(resolve_texture_path("C:\\Users\\me\\models\\plain.png", dir), dir + "/plain.png");
   EXPECT_EQ(resolve_texture_path("/home/me/plain.png", dir), dir + "/plain.png");
   EXPECT_EQ(resolve_texture_path("nope.png", dir), dir + "/nope.png");
+}
+
+TEST(TexturePath, NamesWrittenOnACaseInsensitiveFileSystemResolve) {
+  const std::string dir = test::temp_dir("texture_path_case");
+  std::filesystem::create_directories(dir + "/textures");
+  test::write_file(dir + "/textures/wood.jpg", "x");
+  test::write_file(dir + "/plain.png", "x");
+  test::write_file(dir + "/Twin.png", "x");
+  test::write_file(dir + "/twin.PNG", "x");
+  EXPECT_EQ(resolve_texture_path("Textures\\Wood.JPG", dir), dir + "/textures/wood.jpg");
+  EXPECT_EQ(resolve_texture_path("TEXTURES/wood.jpg", dir), dir + "/textures/wood.jpg");
+  EXPECT_EQ(resolve_texture_path("PLAIN.png", dir), dir + "/plain.png");
+  EXPECT_EQ(resolve_texture_path("C:\\Users\\me\\Plain.PNG", dir), dir + "/plain.png");
+  // an exact name wins; of several that differ only in case, the first in name order
+  EXPECT_EQ(resolve_texture_path("twin.PNG", dir), dir + "/twin.PNG");
+  EXPECT_EQ(resolve_texture_path("TWIN.png", dir), dir + "/Twin.png");
+  // no match: the name as written, for the message
+  EXPECT_EQ(resolve_texture_path("textures/oak.jpg", dir), dir + "/textures/oak.jpg");
+  EXPECT_EQ(resolve_texture_path("Nope/wood.jpg", dir), dir + "/Nope/wood.jpg");
 }
 
 TEST(TexturePath, OnlyReadableRegularFilesAreUsed) {
