@@ -19,7 +19,7 @@ std::vector<Material> read_mtl_file(const std::string& path, std::vector<std::st
     Material& mat = m.material;
     if (!mat.map_Kd.empty()) {
       const std::string written = mat.map_Kd;
-      mat.map_Kd = resolve_texture_path(written, dir);
+      mat.map_Kd = resolve_named_file(written, dir);
       const std::string problem = texture_file_problem(mat.map_Kd);
       if (!problem.empty()) {
         warnings.push_back(path + ":" + std::to_string(m.lines.map_Kd) + ": material '" + mat.name +

@@ -20,14 +20,16 @@
 #include "scene/obj_fast.h"
 #include "scene/obj_scan.h"
 #include "scene/polygon_triangulation.h"
+#include "scene/texture_path.h"
 
 namespace rayvec {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Reads `mtllib` files relative to the OBJ's directory through read_mtl_file (input limit, NUL
-// check, validation, texture look-up); tinyobjloader only learns the names, to number `usemtl`.
+// Reads `mtllib` files relative to the OBJ's directory (names as exporters write them:
+// resolve_named_file) through read_mtl_file (input limit, NUL check, validation, texture
+// look-up); tinyobjloader only learns the names, to number `usemtl`.
 class MtlReader : public tinyobj::MaterialReader {
  public:
   MtlReader(fs::path obj_dir, std::vector<std::string>& warnings)
@@ -35,7 +37,7 @@ class MtlReader : public tinyobj::MaterialReader {
 
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* by_name, std::string* warn, std::string*) override {
-    const fs::path mtl = obj_dir_ / name;
+    const fs::path mtl = resolve_named_file(name, obj_dir_.string());
     // Only regular files: a stranger's `mtllib /dev/zero` (or a FIFO) would read forever.
     std::error_code ec;
     if (fs::exists(mtl, ec) && !fs::is_regular_file(mtl, ec)) {

@@ -55,8 +55,8 @@ fs::path find_ignoring_case(const fs::path& base, const fs::path& rel) {
 
 }  // namespace
 
-std::string resolve_texture_path(const std::string& name, const std::string& mtl_dir) {
-  const fs::path dir(mtl_dir);
+std::string resolve_named_file(const std::string& name, const std::string& dir_name) {
+  const fs::path dir(dir_name);
   auto beside = [&](const fs::path& p) { return absolute_normal(p.is_absolute() ? p : dir / p); };
   const fs::path literal = beside(name);
   if (path_exists(literal)) return literal.string();

@@ -107,13 +107,13 @@ TEST(TexturePath, WindowsSeparatorsAbsolutePathsAndQuotesResolve) {
   std::filesystem::create_directories(dir + "/sub dir");
   test::write_file(dir + "/sub dir/a b.png", "x");
   test::write_file(dir + "/plain.png", "x");
-  EXPECT_EQ(resolve_texture_path(".\\sub dir\\a b.png", dir), dir + "/sub dir/a b.png");
-  EXPECT_EQ(resolve_texture_path("sub dir/a b.png", dir), dir + "/sub dir/a b.png");
-  EXPECT_EQ(resolve_texture_path(dir + "/plain.png", "/elsewhere"), dir + "/plain.png");
+  EXPECT_EQ(resolve_named_file(".\\sub dir\\a b.png", dir), dir + "/sub dir/a b.png");
+  EXPECT_EQ(resolve_named_file("sub dir/a b.png", dir), dir + "/sub dir/a b.png");
+  EXPECT_EQ(resolve_named_file(dir + "/plain.png", "/elsewhere"), dir + "/plain.png");
   // An exporter's absolute path from another machine: the file beside the MTL.
-  EXPECT_EQ(resolve_texture_path("C:\\Users\\me\\models\\plain.png", dir), dir + "/plain.png");
-  EXPECT_EQ(resolve_texture_path("/home/me/plain.png", dir), dir + "/plain.png");
-  EXPECT_EQ(resolve_texture_path("nope.png", dir), dir + "/nope.png");
+  EXPECT_EQ(resolve_named_file("C:\\Users\\me\\models\\plain.png", dir), dir + "/plain.png");
+  EXPECT_EQ(resolve_named_file("/home/me/plain.png", dir), dir + "/plain.png");
+  EXPECT_EQ(resolve_named_file("nope.png", dir), dir + "/nope.png");
 }
 
 TEST(TexturePath, NamesWrittenOnACaseInsensitiveFileSystemResolve) {
@@ -123,16 +123,16 @@ TEST(TexturePath, NamesWrittenOnACaseInsensitiveFileSystemResolve) {
   test::write_file(dir + "/plain.png", "x");
   test::write_file(dir + "/Twin.png", "x");
   test::write_file(dir + "/twin.PNG", "x");
-  EXPECT_EQ(resolve_texture_path("Textures\\Wood.JPG", dir), dir + "/textures/wood.jpg");
-  EXPECT_EQ(resolve_texture_path("TEXTURES/wood.jpg", dir), dir + "/textures/wood.jpg");
-  EXPECT_EQ(resolve_texture_path("PLAIN.png", dir), dir + "/plain.png");
-  EXPECT_EQ(resolve_texture_path("C:\\Users\\me\\Plain.PNG", dir), dir + "/plain.png");
+  EXPECT_EQ(resolve_named_file("Textures\\Wood.JPG", dir), dir + "/textures/wood.jpg");
+  EXPECT_EQ(resolve_named_file("TEXTURES/wood.jpg", dir), dir + "/textures/wood.jpg");
+  EXPECT_EQ(resolve_named_file("PLAIN.png", dir), dir + "/plain.png");
+  EXPECT_EQ(resolve_named_file("C:\\Users\\me\\Plain.PNG", dir), dir + "/plain.png");
   // an exact name wins; of several that differ only in case, the first in name order
-  EXPECT_EQ(resolve_texture_path("twin.PNG", dir), dir + "/twin.PNG");
-  EXPECT_EQ(resolve_texture_path("TWIN.png", dir), dir + "/Twin.png");
+  EXPECT_EQ(resolve_named_file("twin.PNG", dir), dir + "/twin.PNG");
+  EXPECT_EQ(resolve_named_file("TWIN.png", dir), dir + "/Twin.png");
   // no match: the name as written, for the message
-  EXPECT_EQ(resolve_texture_path("textures/oak.jpg", dir), dir + "/textures/oak.jpg");
-  EXPECT_EQ(resolve_texture_path("Nope/wood.jpg", dir), dir + "/Nope/wood.jpg");
+  EXPECT_EQ(resolve_named_file("textures/oak.jpg", dir), dir + "/textures/oak.jpg");
+  EXPECT_EQ(resolve_named_file("Nope/wood.jpg", dir), dir + "/Nope/wood.jpg");
 }
 
 TEST(TexturePath, OnlyReadableRegularFilesAreUsed) {
