@@ -71,13 +71,38 @@ class MtlReader : public tinyobj::MaterialReader {
 
 Vec3f vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
 
+// tinyobjloader's warning for a `usemtl` whose material no MTL file loaded so far defines (the fast
+// reader writes the same), in rayvec's words; "" for any other line.
+std::string unknown_material_warning(const std::string& line) {
+  const std::string head = "material [ '", tail = "' ] not found in .mtl";
+  if (line.size() <= head.size() + tail.size() || line.rfind(head, 0) != 0 ||
+      line.compare(line.size() - tail.size(), tail.size(), tail) != 0)
+    return "";
+  const std::string name = line.substr(head.size(), line.size() - head.size() - tail.size());
+  return "usemtl '" + name +
+         "': no MTL file loaded before it (mtllib) defines that material; drawn with the default material";
+}
+
+// tinyobjloader's warning text (or the fast reader's, written alike) into `warnings`, one per
+// distinct line in the order they first appear, each repeated one with its count: a file whose
+// thousand `usemtl` lines name a missing material warns once, not a thousand times.
 void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings) {
   std::istringstream lines(text);
+  std::vector<std::pair<std::string, std::size_t>> distinct;
   for (std::string line; std::getline(lines, line);) {
     // tinyobjloader repeats a missing MTL file in a second line; MtlReader already named it.
     if (line.empty() || line == "." || line.rfind("Failed to load material file", 0) == 0) continue;
-    warnings.push_back(path + ": " + line);
+    if (std::string ours = unknown_material_warning(line); !ours.empty()) line = std::move(ours);
+    auto seen =
+        std::find_if(distinct.begin(), distinct.end(), [&](const auto& d) { return d.first == line; });
+    if (seen == distinct.end())
+      distinct.emplace_back(std::move(line), 1);
+    else
+      ++seen->second;
   }
+  for (const auto& [line, count] : distinct)
+    warnings.push_back(path + ": " + line +
+                       (count > 1 ? " (repeated on " + std::to_string(count) + " lines)" : ""));
 }
 
 // tinyobjloader's shapes into the triangles, attributes and material ids of `model`; `large`: the

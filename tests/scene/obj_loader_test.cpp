@@ -162,6 +162,28 @@ TEST(ObjLoader, MtlLibrariesNamedOnAnotherSystemAreFound) {
   }
 }
 
+TEST(ObjLoader, AMissingMaterialIsOneWarningWithItsCount) {
+  // fifty `usemtl` lines naming a material no MTL file defines: one warning, on both readers
+  std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (int i = 0; i < 50; ++i) obj += "usemtl missing\nf 1 2 3\n";
+  obj += "usemtl other\nf 1 2 3\n";
+  const std::string dir = test::temp_dir("obj_missing_material");
+  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
+    test::write_file(dir + "/m.obj", obj + extra);
+    ObjLoadTimes times;
+    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
+    EXPECT_EQ(times.fast, extra.empty());
+    EXPECT_EQ(
+        m.warnings,
+        (std::vector<std::string>{
+            dir + "/m.obj: usemtl 'missing': no MTL file loaded before it (mtllib) defines that material; "
+                  "drawn with the default material (repeated on 50 lines)",
+            dir + "/m.obj: usemtl 'other': no MTL file loaded before it (mtllib) defines that material; "
+                  "drawn with the default material"}));
+    EXPECT_EQ(m.triangle_material, std::vector<int32_t>(51, -1));
+  }
+}
+
 TEST(ObjLoader, MissingTextureIsAWarning) {
   const ObjModel m = load_obj(kData + "/obj/polygons.obj");
   bool found = false;
