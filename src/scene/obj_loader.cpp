@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <sstream>
 #include <system_error>
+#include <utility>
 
 #include "io/text_file.h"
 #include "io/input_error.h"
@@ -35,20 +36,43 @@ class MtlReader : public tinyobj::MaterialReader {
   MtlReader(fs::path obj_dir, std::vector<std::string>& warnings)
       : obj_dir_(std::move(obj_dir)), warnings_(warnings) {}
 
+  // A name with spaces (`mtllib Low Poly Tree.mtl`, as some exporters write it) arrives in pieces,
+  // one call each: both readers split the line at spaces and call until a piece loads. A piece
+  // that names no file joins the run of such pieces; the next piece is tried joined to the run
+  // first, and a joined name that exists loads and takes back the run's "not found" warnings.
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* by_name, std::string* warn, std::string*) override {
-    const fs::path mtl = resolve_named_file(name, obj_dir_.string());
-    // Only regular files: a stranger's `mtllib /dev/zero` (or a FIFO) would read forever.
     std::error_code ec;
-    if (fs::exists(mtl, ec) && !fs::is_regular_file(mtl, ec)) {
-      if (warn)
-        *warn += "material file " + mtl.string() + " is not a regular file; using default materials\n";
-      return false;
+    if (!run_.empty()) {
+      const fs::path joined = resolve_named_file(run_ + " " + name, obj_dir_.string());
+      if (fs::is_regular_file(joined, ec)) {
+        taken_back.insert(taken_back.end(), run_warnings_.begin(), run_warnings_.end());
+        end_run();
+        return load(joined, materials, by_name);
+      }
     }
+    const fs::path mtl = resolve_named_file(name, obj_dir_.string());
     if (!fs::exists(mtl, ec)) {
-      if (warn) *warn += "material file " + mtl.string() + " not found; using default materials\n";
+      run_warnings_.push_back("material file " + mtl.string() + " not found; using default materials");
+      *warn += run_warnings_.back() + "\n";
+      run_ += (run_.empty() ? "" : " ") + name;
       return false;
     }
+    end_run();
+    // Only regular files: a stranger's `mtllib /dev/zero` (or a FIFO) would read forever.
+    if (!fs::is_regular_file(mtl, ec)) {
+      *warn += "material file " + mtl.string() + " is not a regular file; using default materials\n";
+      return false;
+    }
+    return load(mtl, materials, by_name);
+  }
+
+  std::vector<Material> read;           // parallel to tinyobjloader's materials
+  std::vector<std::string> taken_back;  // warnings given for pieces of a name that then loaded
+
+ private:
+  bool load(const fs::path& mtl, std::vector<tinyobj::material_t>* materials,
+            std::map<std::string, int>* by_name) {
     for (Material& m : read_mtl_file(mtl.string(), warnings_)) {
       const int index = static_cast<int>(materials->size());
       by_name->emplace(m.name, index);
@@ -62,11 +86,15 @@ class MtlReader : public tinyobj::MaterialReader {
     return true;
   }
 
-  std::vector<Material> read;  // parallel to tinyobjloader's materials
+  void end_run() {
+    run_.clear();
+    run_warnings_.clear();
+  }
 
- private:
   fs::path obj_dir_;
   std::vector<std::string>& warnings_;
+  std::string run_;  // the pieces since the last that named a file, joined by spaces
+  std::vector<std::string> run_warnings_;
 };
 
 Vec3f vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
@@ -84,14 +112,20 @@ std::string unknown_material_warning(const std::string& line) {
 }
 
 // tinyobjloader's warning text (or the fast reader's, written alike) into `warnings`, one per
-// distinct line in the order they first appear, each repeated one with its count: a file whose
-// thousand `usemtl` lines name a missing material warns once, not a thousand times.
-void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings) {
+// distinct line in the order they first appear, each repeated one with its count (a file whose
+// thousand `usemtl` lines name a missing material warns once, not a thousand times), less one
+// occurrence of each line in `taken_back`.
+void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings,
+                    std::vector<std::string> taken_back = {}) {
   std::istringstream lines(text);
   std::vector<std::pair<std::string, std::size_t>> distinct;
   for (std::string line; std::getline(lines, line);) {
     // tinyobjloader repeats a missing MTL file in a second line; MtlReader already named it.
     if (line.empty() || line == "." || line.rfind("Failed to load material file", 0) == 0) continue;
+    if (const auto back = std::find(taken_back.begin(), taken_back.end(), line); back != taken_back.end()) {
+      taken_back.erase(back);
+      continue;
+    }
     if (std::string ours = unknown_material_warning(line); !ours.empty()) line = std::move(ours);
     auto seen =
         std::find_if(distinct.begin(), distinct.end(), [&](const auto& d) { return d.first == line; });
@@ -216,7 +250,7 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
   clock.parse = seconds_since(t0) - clock.check;
 
   t0 = std::chrono::steady_clock::now();
-  split_warnings(warn, path, model.warnings);
+  split_warnings(warn, path, model.warnings, mtl_reader.taken_back);
   if (!err.empty()) split_warnings(err, path, model.warnings);  // e.g. MTL problems on success
   model.materials = std::move(mtl_reader.read);
   if (!clock.fast) convert_geometry(attrib, shapes, large_faces, materials.size(), path, model);

@@ -162,6 +162,35 @@ TEST(ObjLoader, MtlLibrariesNamedOnAnotherSystemAreFound) {
   }
 }
 
+TEST(ObjLoader, MtlLibraryNamesWithSpacesAreFound) {
+  // `mtllib Low Poly Tree.mtl`: tinyobjloader splits the line at spaces; the pieces that name no
+  // file are joined to the next. Both readers; a missing name before a found one still warns.
+  const std::string dir = test::temp_dir("obj_mtllib_spaces");
+  test::write_file(dir + "/Low Poly Tree.mtl", "newmtl bark\nKd 0.5 0.25 0\n");
+  test::write_file(dir + "/leaf.mtl", "newmtl leaf\nKd 0 1 0\n");
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl bark\nf 1 2 3\nusemtl leaf\nf 1 2 3\n";
+  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
+    test::write_file(dir + "/m.obj", "mtllib Low Poly Tree.mtl\nmtllib gone.mtl leaf.mtl\n" + tri + extra);
+    ObjLoadTimes times;
+    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
+    EXPECT_EQ(times.fast, extra.empty());
+    ASSERT_EQ(m.materials.size(), 2u);
+    EXPECT_EQ(m.materials[0].name, "bark");
+    EXPECT_EQ(m.materials[1].name, "leaf");
+    EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{0, 1}));
+    EXPECT_EQ(m.warnings, (std::vector<std::string>{dir + "/m.obj: material file " + dir +
+                                                    "/gone.mtl not found; using default materials"}));
+  }
+  // no joined name exists: each piece warns, as before
+  test::write_file(dir + "/n.obj", "mtllib no such.mtl\n" + tri);
+  const ObjModel n = load_obj(dir + "/n.obj");
+  EXPECT_TRUE(n.materials.empty());
+  ASSERT_GE(n.warnings.size(), 2u);
+  EXPECT_EQ(n.warnings[0], dir + "/n.obj: material file " + dir + "/no not found; using default materials");
+  EXPECT_EQ(n.warnings[1],
+            dir + "/n.obj: material file " + dir + "/such.mtl not found; using default materials");
+}
+
 TEST(ObjLoader, AMissingMaterialIsOneWarningWithItsCount) {
   // fifty `usemtl` lines naming a material no MTL file defines: one warning, on both readers
   std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
