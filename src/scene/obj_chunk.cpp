@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "geometry/coordinate_range.h"
+#include "scene/material_names.h"
 #include "scene/obj_scan.h"
 
 namespace rayvec {
@@ -284,11 +285,13 @@ void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
     } else if (key == "l" || key == "p" || key == "vw") {
       ok = false;  // lines, points, skin weights: rare, and tinyobjloader may reject them
     } else if (key.substr(0, 6) == "usemtl") {
-      // tinyobjloader matches the prefix and takes the next word after it, even `usemtlname`
+      // tinyobjloader matches the prefix, even `usemtlname`; the name is the rest of the line
       in.jump(line + 6);
-      in.skip_blanks();
+      const char* start = in.pos();
+      while (!in.at_line_end()) in.jump(in.pos() + 1);
       chunk.events.push_back(
-          {ObjEvent::usemtl, chunk.lines, chunk.triangles.size(), std::string(in.token())});
+          {ObjEvent::usemtl, chunk.lines, chunk.triangles.size(),
+           usemtl_name(std::string_view(start, static_cast<std::size_t>(in.pos() - start)))});
       ok = in.next_line();
     } else if (key == "mtllib" && !in.at_line_end()) {
       in.jump(line + 7);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "platform/large_buffer.h"
+#include "scene/material_names.h"
 #include "scene/obj_chunk.h"
 #include "scene/obj_sample.h"
 #include "scene/polygon_triangulation.h"
@@ -137,8 +138,9 @@ std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const
     for (const ObjEvent& e : chunks[i].events) {
       const std::size_t triangle = at[i].triangles + e.triangle;
       if (e.kind == ObjEvent::usemtl) {
-        const auto it = by_name.find(e.text);
-        if (it == by_name.end()) warn += "material [ '" + e.text + "' ] not found in .mtl\n";
+        const std::string key = material_key(e.text);
+        const auto it = by_name.find(key);
+        if (it == by_name.end()) warn += "material [ '" + key + "' ] not found in .mtl\n";
         std::fill(material.begin() + static_cast<std::ptrdiff_t>(from),
                   material.begin() + static_cast<std::ptrdiff_t>(triangle), current);
         from = triangle;

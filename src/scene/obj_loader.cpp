@@ -18,6 +18,7 @@
 #include "io/input_error.h"
 #include "platform/stopwatch.h"
 #include "scene/mtl_file.h"
+#include "scene/material_names.h"
 #include "scene/obj_fast.h"
 #include "scene/obj_scan.h"
 #include "scene/polygon_triangulation.h"
@@ -75,9 +76,7 @@ class MtlReader : public tinyobj::MaterialReader {
             std::map<std::string, int>* by_name) {
     for (Material& m : read_mtl_file(mtl.string(), warnings_)) {
       const int index = static_cast<int>(materials->size());
-      by_name->emplace(m.name, index);
-      // tinyobjloader's `usemtl` reads only the first word of a name with spaces.
-      by_name->emplace(m.name.substr(0, m.name.find_first_of(" \t")), index);
+      by_name->emplace(material_key(m.name), index);  // as `usemtl` lines reach tinyobjloader
       tinyobj::material_t named{};  // value-initialized: tinyobjloader leaves its members unset
       named.name = m.name;
       materials->push_back(named);
@@ -106,7 +105,7 @@ std::string unknown_material_warning(const std::string& line) {
   if (line.size() <= head.size() + tail.size() || line.rfind(head, 0) != 0 ||
       line.compare(line.size() - tail.size(), tail.size(), tail) != 0)
     return "";
-  const std::string name = line.substr(head.size(), line.size() - head.size() - tail.size());
+  const std::string name = material_name(line.substr(head.size(), line.size() - head.size() - tail.size()));
   return "usemtl '" + name +
          "': no MTL file loaded before it (mtllib) defines that material; drawn with the default material";
 }
@@ -243,7 +242,7 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
     const double before_check = seconds_since(t0);
     large_faces = check_obj_text(text, path);
     clock.check = seconds_since(t0) - before_check;
-    std::istringstream in{std::string(text)};
+    std::istringstream in{with_material_keys(text)};
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, false))
       throw InputError(path, 0, "cannot parse: " + err);
   }

@@ -191,6 +191,29 @@ TEST(ObjLoader, MtlLibraryNamesWithSpacesAreFound) {
             dir + "/n.obj: material file " + dir + "/such.mtl not found; using default materials");
 }
 
+TEST(ObjLoader, MaterialNamesWithSpacesAreTheirWholeName) {
+  // 3ds Max names materials `Material #25`, `Material #26`: tinyobjloader read both usemtl lines
+  // as "Material" and gave every triangle the first. Both readers; a name with a trailing blank.
+  const std::string dir = test::temp_dir("obj_usemtl_spaces");
+  test::write_file(dir + "/m.mtl",
+                   "newmtl Material #25\nKd 1 0 0\nnewmtl Material #26\nKd 0 1 0\nnewmtl plain\n");
+  const std::string obj =
+      "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Material #26\nf 1 2 3\n"
+      "usemtl  Material #25 \r\nf 1 2 3\nusemtl plain\nf 1 2 3\nusemtl Material\nf 1 2 3\n";
+  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
+    test::write_file(dir + "/m.obj", obj + extra);
+    ObjLoadTimes times;
+    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
+    EXPECT_EQ(times.fast, extra.empty());
+    ASSERT_EQ(m.materials.size(), 3u);
+    EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{1, 0, 2, -1}));
+    EXPECT_EQ(m.warnings,
+              (std::vector<std::string>{dir + "/m.obj: usemtl 'Material': no MTL file loaded before it "
+                                              "(mtllib) defines that material; drawn with the default "
+                                              "material"}));
+  }
+}
+
 TEST(ObjLoader, AMissingMaterialIsOneWarningWithItsCount) {
   // fifty `usemtl` lines naming a material no MTL file defines: one warning, on both readers
   std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";

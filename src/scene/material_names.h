@@ -1,0 +1,26 @@
+// How an OBJ `usemtl` line names its material, the same on both OBJ readers: the whole rest of the
+// line, so `usemtl Material #25` and `usemtl Material #26` are two materials. tinyobjloader reads
+// only the first word (both were "Material", the first such material); its reading is kept apart
+// from names with blanks by keys without them.
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace rayvec {
+
+// The material a `usemtl` line names, given the text after the keyword (`usemtl name`, or
+// `usemtlname` as tinyobjloader also reads it): leading and trailing blanks (space, tab, CR)
+// removed, inner ones kept — as `newmtl` names are read (mtl_parser.cpp).
+std::string usemtl_name(std::string_view after_keyword);
+
+// A material name as a key that tinyobjloader's `usemtl` reads whole (its first word): every
+// space and tab written as the unit separator 0x1F; material_name undoes it. The key of a name
+// without blanks is the name.
+std::string material_key(std::string_view name);
+std::string material_name(std::string_view key);
+
+// `text` (an OBJ file) with the name of every `usemtl` line written as its material_key, for
+// tinyobjloader; lines, line ends and everything else unchanged.
+std::string with_material_keys(std::string_view text);
+
+}  // namespace rayvec
