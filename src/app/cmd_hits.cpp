@@ -12,6 +12,7 @@
 #include "app/device_option.h"
 #include "app/trace_options.h"
 #include "distributed/rays_across_ranks.h"
+#include "io/error_report.h"
 #include "io/hits_csv.h"
 #include "io/input_error.h"
 #include "io/output_sink.h"
@@ -34,7 +35,7 @@ int run_hits(const HitsArgs& args) {
   const AccelKind kind = resolve_accel(args.trace);
   const bool cuda = resolve_device(args.device, config.intersector);
   const ObjModel model = load_obj(args.mesh, ObjLoadOptions{.available_threads = omp_get_max_threads()});
-  for (const std::string& w : model.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  report_warnings(model.warnings);
   // Under mpirun rank 0 reads the rays and writes the answers (its share of the rays goes to each rank).
   const bool root = cluster().root();
   if (cuda && cluster().distributed())

@@ -13,6 +13,7 @@
 #include "distributed/render_across_ranks.h"
 #include "image/image_io.h"
 #include "io/atomic_file.h"
+#include "io/error_report.h"
 #include "io/input_error.h"
 #include "io/progress.h"
 #include "platform/stopwatch.h"
@@ -146,8 +147,7 @@ int run_render(RenderArgs& a) {
   const TraceConfig config = resolve_trace_options(a.trace);
   const AccelKind kind = resolve_accel(a.trace);
   stats.load_seconds = seconds_since(t);
-  for (const std::string& w : scene.warnings)
-    std::fprintf(stderr, "%s: %s\n", a.strict ? "error" : "warning", w.c_str());
+  report_warnings(scene.warnings, a.strict ? "error" : "warning");
   if (a.strict && !scene.warnings.empty())
     throw InputError(a.scene + ": " + std::to_string(scene.warnings.size()) +
                      " problem(s) while loading, and --strict makes them errors");

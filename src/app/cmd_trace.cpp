@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/scene_overrides.h"
 #include "app/trace_options.h"
+#include "io/error_report.h"
 #include "io/input_error.h"
 #include "render/ray_tree.h"
 #include "render/ray_tree_format.h"
@@ -52,7 +53,7 @@ int run_trace(TraceArgs& a) {
                      std::to_string(spp - 1) + " with spp " + std::to_string(spp) + ")");
   if (a.trace.intersector.empty()) a.trace.intersector = render_intersector(scene);
   const TraceConfig config = resolve_trace_options(a.trace);
-  for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  report_warnings(scene.warnings);
   const auto accel = make_accelerator(resolve_accel(a.trace), scene.mesh, config);
   const PixelTrace tree = trace_pixel(scene, *accel, scene.render, x, y, a.sample);
   const std::string out = a.json ? ray_tree_json(tree, scene) : ray_tree_text(tree, scene);

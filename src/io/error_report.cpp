@@ -20,4 +20,12 @@ void report_error(const std::string& message) {
 
 const std::string& last_error_message() { return last(); }
 
+void report_warnings(const std::vector<std::string>& warnings, const char* label) {
+  for (std::size_t i = 0; i < warnings.size() && i < kShownWarnings; ++i)
+    std::fprintf(stderr, "%s: %s\n", label, warnings[i].c_str());
+  if (warnings.size() > kShownWarnings)
+    std::fprintf(stderr, "%s: %zu more not shown (%zu in all)\n", label, warnings.size() - kShownWarnings,
+                 warnings.size());
+}
+
 }  // namespace rayvec

@@ -12,13 +12,14 @@
 #include <filesystem>
 #include <sstream>
 #include <system_error>
+#include <unordered_map>
 #include <utility>
 
 #include "io/text_file.h"
 #include "io/input_error.h"
 #include "platform/stopwatch.h"
-#include "scene/mtl_file.h"
 #include "scene/material_names.h"
+#include "scene/mtl_file.h"
 #include "scene/obj_fast.h"
 #include "scene/obj_scan.h"
 #include "scene/polygon_triangulation.h"
@@ -117,7 +118,8 @@ std::string unknown_material_warning(const std::string& line) {
 void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings,
                     std::vector<std::string> taken_back = {}) {
   std::istringstream lines(text);
-  std::vector<std::pair<std::string, std::size_t>> distinct;
+  std::vector<std::pair<std::string, std::size_t>> distinct;  // each line and its count
+  std::unordered_map<std::string, std::size_t> at;            // where a line is in `distinct`
   for (std::string line; std::getline(lines, line);) {
     // tinyobjloader repeats a missing MTL file in a second line; MtlReader already named it.
     if (line.empty() || line == "." || line.rfind("Failed to load material file", 0) == 0) continue;
@@ -126,12 +128,11 @@ void split_warnings(const std::string& text, const std::string& path, std::vecto
       continue;
     }
     if (std::string ours = unknown_material_warning(line); !ours.empty()) line = std::move(ours);
-    auto seen =
-        std::find_if(distinct.begin(), distinct.end(), [&](const auto& d) { return d.first == line; });
-    if (seen == distinct.end())
+    const auto [it, fresh] = at.emplace(line, distinct.size());
+    if (fresh)
       distinct.emplace_back(std::move(line), 1);
     else
-      ++seen->second;
+      ++distinct[it->second].second;
   }
   for (const auto& [line, count] : distinct)
     warnings.push_back(path + ": " + line +
