@@ -32,24 +32,55 @@ std::string material_name(std::string_view key) {
   return name;
 }
 
-std::string with_material_keys(std::string_view text) {
+std::string with_material_keys(std::string_view text, std::vector<UsemtlLine>& usemtl_lines) {
   std::string out;
   out.reserve(text.size());
+  std::size_t line_no = 0;
   for (std::size_t pos = 0; pos < text.size();) {
     const std::size_t start = pos;
     const std::string_view line = next_text_line(text, pos);
+    ++line_no;
     const std::size_t indent = std::min(line.find_first_not_of(" \t"), line.size());
     if (line.compare(indent, 6, "usemtl") != 0) {
       out.append(text.substr(start, pos - start));
       continue;
     }
     // tinyobjloader matches the keyword as a prefix (`usemtlname` too) and skips the blanks after it
-    out.append(line.substr(0, indent + 6))
-        .append(" ")
-        .append(material_key(usemtl_name(line.substr(indent + 6))));
+    const std::string key = material_key(usemtl_name(line.substr(indent + 6)));
+    out.append(line.substr(0, indent + 6)).append(" ").append(key);
     out.append(text.substr(start + line.size(), pos - start - line.size()));  // the line's end
+    usemtl_lines.push_back({line_no, key});
   }
   return out;
+}
+
+namespace {
+constexpr std::string_view kUnknownHead = "material [ '", kUnknownTail = "' ] not found in .mtl";
+constexpr std::string_view kLineHead = " (line ";
+}  // namespace
+
+std::string unknown_material_text(const std::string& key, std::size_t line) {
+  return std::string(kUnknownHead) + key + std::string(kUnknownTail) + std::string(kLineHead) +
+         std::to_string(line) + ")";
+}
+
+bool parse_unknown_material(std::string_view warning, std::string& key, std::size_t& line) {
+  if (warning.substr(0, kUnknownHead.size()) != kUnknownHead) return false;
+  const std::size_t tail = warning.rfind(kUnknownTail);
+  if (tail == std::string_view::npos || tail < kUnknownHead.size()) return false;
+  const std::string_view rest = warning.substr(tail + kUnknownTail.size());
+  line = 0;
+  if (!rest.empty()) {
+    if (rest.substr(0, kLineHead.size()) != kLineHead || rest.size() < kLineHead.size() + 2 ||
+        rest.back() != ')')
+      return false;
+    for (const char c : rest.substr(kLineHead.size(), rest.size() - kLineHead.size() - 1)) {
+      if (c < '0' || c > '9') return false;
+      line = line * 10 + std::size_t(c - '0');
+    }
+  }
+  key = std::string(warning.substr(kUnknownHead.size(), tail - kUnknownHead.size()));
+  return true;
 }
 
 }  // namespace rayvec

@@ -3,8 +3,10 @@
 // only the first word (both were "Material", the first such material); its reading is kept apart
 // from names with blanks by keys without them.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rayvec {
 
@@ -19,8 +21,23 @@ std::string usemtl_name(std::string_view after_keyword);
 std::string material_key(std::string_view name);
 std::string material_name(std::string_view key);
 
+// A `usemtl` line: its number (1-based) and the material_key of its name.
+struct UsemtlLine {
+  std::size_t line;
+  std::string key;
+};
+
 // `text` (an OBJ file) with the name of every `usemtl` line written as its material_key, for
-// tinyobjloader; lines, line ends and everything else unchanged.
-std::string with_material_keys(std::string_view text);
+// tinyobjloader; lines, line ends and everything else unchanged. `usemtl_lines` receives the
+// file's `usemtl` lines in order.
+std::string with_material_keys(std::string_view text, std::vector<UsemtlLine>& usemtl_lines);
+
+// The warning for a `usemtl` line whose material no MTL file loaded before it defines, as both OBJ
+// readers write it before load_obj words it for the user: tinyobjloader's words,
+// "material [ 'KEY' ] not found in .mtl", then " (line N)". parse_unknown_material reads `key`
+// and `line` back (line 0 when the text has none, as tinyobjloader writes it); false when
+// `warning` is another warning.
+std::string unknown_material_text(const std::string& key, std::size_t line);
+bool parse_unknown_material(std::string_view warning, std::string& key, std::size_t& line);
 
 }  // namespace rayvec

@@ -140,7 +140,7 @@ std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const
       if (e.kind == ObjEvent::usemtl) {
         const std::string key = material_key(e.text);
         const auto it = by_name.find(key);
-        if (it == by_name.end()) warn += "material [ '" + key + "' ] not found in .mtl\n";
+        if (it == by_name.end()) warn += unknown_material_text(key, at[i].lines + e.line) + "\n";
         std::fill(material.begin() + static_cast<std::ptrdiff_t>(from),
                   material.begin() + static_cast<std::ptrdiff_t>(triangle), current);
         from = triangle;

@@ -99,44 +99,74 @@ class MtlReader : public tinyobj::MaterialReader {
 
 Vec3f vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
 
-// tinyobjloader's warning for a `usemtl` whose material no MTL file loaded so far defines (the fast
-// reader writes the same), in rayvec's words; "" for any other line.
-std::string unknown_material_warning(const std::string& line) {
-  const std::string head = "material [ '", tail = "' ] not found in .mtl";
-  if (line.size() <= head.size() + tail.size() || line.rfind(head, 0) != 0 ||
-      line.compare(line.size() - tail.size(), tail.size(), tail) != 0)
-    return "";
-  const std::string name = material_name(line.substr(head.size(), line.size() - head.size() - tail.size()));
-  return "usemtl '" + name +
-         "': no MTL file loaded before it (mtllib) defines that material; drawn with the default material";
+// tinyobjloader's warnings for `usemtl` lines whose material no MTL file loaded before them
+// defines, given their line numbers: once a material is defined it stays, so the warnings for a
+// key are for its first `usemtl` lines, in order.
+std::string with_usemtl_lines(const std::string& warn, const std::vector<UsemtlLine>& usemtl_lines) {
+  std::unordered_map<std::string, std::vector<std::size_t>> lines_of;
+  for (const UsemtlLine& u : usemtl_lines) lines_of[u.key].push_back(u.line);
+  std::unordered_map<std::string, std::size_t> used;
+  std::istringstream in(warn);
+  std::string out, key;
+  for (std::string line; std::getline(in, line);) {
+    std::size_t line_no = 0;
+    if (parse_unknown_material(line, key, line_no) && line_no == 0) {
+      const std::vector<std::size_t>& lines = lines_of[key];
+      const std::size_t k = used[key]++;
+      if (k < lines.size()) line = unknown_material_text(key, lines[k]);
+    }
+    out += line + "\n";
+  }
+  return out;
 }
 
-// tinyobjloader's warning text (or the fast reader's, written alike) into `warnings`, one per
-// distinct line in the order they first appear, each repeated one with its count (a file whose
-// thousand `usemtl` lines name a missing material warns once, not a thousand times), less one
-// occurrence of each line in `taken_back`.
+// The readers' warning text (tinyobjloader's, or the fast reader's written alike) into
+// `warnings` as the user reads them, less one occurrence of each line in `taken_back`. A
+// `usemtl` whose material is missing reads `path:line: usemtl 'name': ...`, once per name, with
+// the count of the later lines naming it (a file whose thousand `usemtl` lines name a missing
+// material warns once); any other warning given more than once, once with its count. A `g` line
+// without a name changes nothing rayvec reads: not a warning.
 void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings,
                     std::vector<std::string> taken_back = {}) {
   std::istringstream lines(text);
-  std::vector<std::pair<std::string, std::size_t>> distinct;  // each line and its count
-  std::unordered_map<std::string, std::size_t> at;            // where a line is in `distinct`
+  struct Distinct {
+    std::string text;
+    std::size_t count;
+  };
+  std::vector<Distinct> distinct;
+  std::unordered_map<std::string, std::size_t> at;  // where a line (or a missing material) is in `distinct`
   for (std::string line; std::getline(lines, line);) {
     // tinyobjloader repeats a missing MTL file in a second line; MtlReader already named it.
-    if (line.empty() || line == "." || line.rfind("Failed to load material file", 0) == 0) continue;
+    if (line.empty() || line == "." || line.rfind("Failed to load material file", 0) == 0 ||
+        line.rfind("Empty group name.", 0) == 0)
+      continue;
     if (const auto back = std::find(taken_back.begin(), taken_back.end(), line); back != taken_back.end()) {
       taken_back.erase(back);
       continue;
     }
-    if (std::string ours = unknown_material_warning(line); !ours.empty()) line = std::move(ours);
-    const auto [it, fresh] = at.emplace(line, distinct.size());
+    std::string key, id = line;
+    std::size_t line_no = 0;
+    if (parse_unknown_material(line, key, line_no)) {
+      id = "usemtl\n" + key;
+      line =
+          (line_no > 0 ? ":" + std::to_string(line_no) : std::string()) + ": usemtl '" + material_name(key) +
+          "': no MTL file loaded before it (mtllib) defines that material; drawn with the default material";
+    } else {
+      line = ": " + line;
+    }
+    const auto [it, fresh] = at.emplace(id, distinct.size());
     if (fresh)
-      distinct.emplace_back(std::move(line), 1);
+      distinct.push_back({std::move(line), 1});
     else
-      ++distinct[it->second].second;
+      ++distinct[it->second].count;
   }
-  for (const auto& [line, count] : distinct)
-    warnings.push_back(path + ": " + line +
-                       (count > 1 ? " (repeated on " + std::to_string(count) + " lines)" : ""));
+  for (const Distinct& d : distinct) {
+    const bool usemtl = d.text.find(": usemtl '") != std::string::npos;
+    const std::string more = d.count < 2 ? ""
+                             : usemtl    ? " (and on " + std::to_string(d.count - 1) + " later lines)"
+                                         : " (" + std::to_string(d.count) + " times)";
+    warnings.push_back(path + d.text + more);
+  }
 }
 
 // tinyobjloader's shapes into the triangles, attributes and material ids of `model`; `large`: the
@@ -239,13 +269,15 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<LargeFace> large_faces;
+  std::vector<UsemtlLine> usemtl_lines;
   if (!clock.fast) {
     const double before_check = seconds_since(t0);
     large_faces = check_obj_text(text, path);
     clock.check = seconds_since(t0) - before_check;
-    std::istringstream in{with_material_keys(text)};
+    std::istringstream in{with_material_keys(text, usemtl_lines)};
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, false))
       throw InputError(path, 0, "cannot parse: " + err);
+    warn = with_usemtl_lines(warn, usemtl_lines);
   }
   clock.parse = seconds_since(t0) - clock.check;
 

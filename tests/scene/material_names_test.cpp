@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace rayvec {
 namespace {
@@ -31,9 +32,35 @@ TEST(MaterialNames, OnlyUsemtlLinesAreRewrittenAndLineEndsStay) {
       "v 0 0 0\r\nusemtl Material #25\r\n  usemtl\tA B \nusemtlC D\rg a b\nf 1 2 3\n# usemtl x y\nusemtl";
   const std::string want = std::string("v 0 0 0\r\nusemtl Material\x1f#25\r\n  usemtl A\x1f") +
                            "B\nusemtl C\x1f" + "D\rg a b\nf 1 2 3\n# usemtl x y\nusemtl ";
-  EXPECT_EQ(with_material_keys(text), want);
-  EXPECT_EQ(with_material_keys("f 1 2 3\n"), "f 1 2 3\n");
-  EXPECT_EQ(with_material_keys(""), "");
+  std::vector<UsemtlLine> lines;
+  EXPECT_EQ(with_material_keys(text, lines), want);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0].line, 2u);
+  EXPECT_EQ(lines[0].key, "Material\x1f#25");
+  EXPECT_EQ(lines[1].line, 3u);
+  EXPECT_EQ(lines[2].line, 4u);  // a lone CR ends a line too
+  EXPECT_EQ(lines[2].key,
+            "C\x1f"
+            "D");
+  EXPECT_EQ(lines[3].line, 8u);
+  EXPECT_EQ(lines[3].key, "");
+  lines.clear();
+  EXPECT_EQ(with_material_keys("f 1 2 3\n", lines), "f 1 2 3\n");
+  EXPECT_EQ(with_material_keys("", lines), "");
+  EXPECT_TRUE(lines.empty());
+}
+
+TEST(MaterialNames, UnknownMaterialWarningsReadBack) {
+  std::string key;
+  std::size_t line = 7;
+  EXPECT_TRUE(parse_unknown_material(unknown_material_text("Material\x1f#25", 42), key, line));
+  EXPECT_EQ(key, "Material\x1f#25");
+  EXPECT_EQ(line, 42u);
+  EXPECT_TRUE(parse_unknown_material("material [ '' ] not found in .mtl", key, line));  // tinyobjloader's
+  EXPECT_EQ(key, "");
+  EXPECT_EQ(line, 0u);
+  EXPECT_FALSE(parse_unknown_material("material file x.mtl not found", key, line));
+  EXPECT_FALSE(parse_unknown_material("material [ 'a' ] not found in .mtl (line x)", key, line));
 }
 
 }  // namespace

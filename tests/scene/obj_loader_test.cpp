@@ -208,7 +208,7 @@ TEST(ObjLoader, MaterialNamesWithSpacesAreTheirWholeName) {
     ASSERT_EQ(m.materials.size(), 3u);
     EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{1, 0, 2, -1}));
     EXPECT_EQ(m.warnings,
-              (std::vector<std::string>{dir + "/m.obj: usemtl 'Material': no MTL file loaded before it "
+              (std::vector<std::string>{dir + "/m.obj:11: usemtl 'Material': no MTL file loaded before it "
                                               "(mtllib) defines that material; drawn with the default "
                                               "material"}));
   }
@@ -228,11 +228,31 @@ TEST(ObjLoader, AMissingMaterialIsOneWarningWithItsCount) {
     EXPECT_EQ(
         m.warnings,
         (std::vector<std::string>{
-            dir + "/m.obj: usemtl 'missing': no MTL file loaded before it (mtllib) defines that material; "
-                  "drawn with the default material (repeated on 50 lines)",
-            dir + "/m.obj: usemtl 'other': no MTL file loaded before it (mtllib) defines that material; "
+            dir + "/m.obj:4: usemtl 'missing': no MTL file loaded before it (mtllib) defines that material; "
+                  "drawn with the default material (and on 49 later lines)",
+            dir + "/m.obj:104: usemtl 'other': no MTL file loaded before it (mtllib) defines that material; "
                   "drawn with the default material"}));
     EXPECT_EQ(m.triangle_material, std::vector<int32_t>(51, -1));
+  }
+}
+
+TEST(ObjLoader, AUsemtlBeforeItsMtllibIsNamedByItsLine) {
+  // the first `usemtl a` comes before the MTL that defines a: only that line warns, on both readers
+  const std::string dir = test::temp_dir("obj_usemtl_early");
+  test::write_file(dir + "/m.mtl", "newmtl a\nKd 1 0 0\n");
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nmtllib m.mtl\nusemtl a\nf 1 2 3\n"
+      "g\nusemtl b\nf 1 2 3\nusemtl a\nf 1 2 3\n";
+  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
+    test::write_file(dir + "/m.obj", obj + extra);
+    ObjLoadTimes times;
+    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
+    EXPECT_EQ(times.fast, extra.empty());
+    EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{-1, 0, -1, 0}));
+    const std::string tail =
+        "': no MTL file loaded before it (mtllib) defines that material; drawn with the default material";
+    EXPECT_EQ(m.warnings, (std::vector<std::string>{dir + "/m.obj:4: usemtl 'a" + tail,
+                                                    dir + "/m.obj:10: usemtl 'b" + tail}));
   }
 }
 
