@@ -1,3 +1,5 @@
+// Material names as `usemtl` lines give them, their keys for tinyobjloader, and the warning for a
+// missing one.
 #include "scene/material_names.h"
 
 #include <algorithm>
@@ -8,6 +10,8 @@ namespace rayvec {
 namespace {
 
 constexpr char kKeyBlank = '\x1f';
+constexpr std::string_view kUnknownHead = "material [ '", kUnknownTail = "' ] not found in .mtl";
+constexpr std::string_view kLineHead = " (line ";
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
@@ -53,11 +57,6 @@ std::string with_material_keys(std::string_view text, std::vector<UsemtlLine>& u
   }
   return out;
 }
-
-namespace {
-constexpr std::string_view kUnknownHead = "material [ '", kUnknownTail = "' ] not found in .mtl";
-constexpr std::string_view kLineHead = " (line ";
-}  // namespace
 
 std::string unknown_material_text(const std::string& key, std::size_t line) {
   return std::string(kUnknownHead) + key + std::string(kUnknownTail) + std::string(kLineHead) +
