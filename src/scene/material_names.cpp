@@ -36,7 +36,14 @@ std::string material_name(std::string_view key) {
   return name;
 }
 
-std::string with_material_keys(std::string_view text, std::vector<UsemtlLine>& usemtl_lines) {
+std::string mtllib_separators(std::string_view rest) {
+  std::string out(rest);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (out[i] == '\\' && (i + 1 == out.size() || out[i + 1] != ' ')) out[i] = '/';
+  return out;
+}
+
+std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine>& usemtl_lines) {
   std::string out;
   out.reserve(text.size());
   std::size_t line_no = 0;
@@ -45,6 +52,13 @@ std::string with_material_keys(std::string_view text, std::vector<UsemtlLine>& u
     const std::string_view line = next_text_line(text, pos);
     ++line_no;
     const std::size_t indent = std::min(line.find_first_not_of(" \t"), line.size());
+    const std::string_view end = text.substr(start + line.size(), pos - start - line.size());
+    if (line.compare(indent, 6, "mtllib") == 0 && line.size() > indent + 6 &&
+        (line[indent + 6] == ' ' || line[indent + 6] == '\t')) {
+      // tinyobjloader's test for the keyword, and the rest after its one blank
+      out.append(line.substr(0, indent + 7)).append(mtllib_separators(line.substr(indent + 7))).append(end);
+      continue;
+    }
     if (line.compare(indent, 6, "usemtl") != 0) {
       out.append(text.substr(start, pos - start));
       continue;
@@ -52,7 +66,7 @@ std::string with_material_keys(std::string_view text, std::vector<UsemtlLine>& u
     // tinyobjloader matches the keyword as a prefix (`usemtlname` too) and skips the blanks after it
     const std::string key = material_key(usemtl_name(line.substr(indent + 6)));
     out.append(line.substr(0, indent + 6)).append(" ").append(key);
-    out.append(text.substr(start + line.size(), pos - start - line.size()));  // the line's end
+    out.append(end);
     usemtl_lines.push_back({line_no, key});
   }
   return out;

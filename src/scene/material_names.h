@@ -1,7 +1,7 @@
 // How an OBJ `usemtl` line names its material, the same on both OBJ readers: the whole rest of the
 // line, so `usemtl Material #25` and `usemtl Material #26` are two materials. tinyobjloader reads
 // only the first word (both were "Material", the first such material); its reading is kept apart
-// from names with blanks by keys without them.
+// from names with blanks by keys without them. And how `mtllib` names its files (Windows paths).
 #pragma once
 #include <cstddef>
 #include <string>
@@ -27,10 +27,15 @@ struct UsemtlLine {
   std::string key;
 };
 
-// `text` (an OBJ file) with the name of every `usemtl` line written as its material_key, for
-// tinyobjloader; lines, line ends and everything else unchanged. `usemtl_lines` receives the
-// file's `usemtl` lines in order.
-std::string with_material_keys(std::string_view text, std::vector<UsemtlLine>& usemtl_lines);
+// The text after `mtllib ` with every `\` that does not escape a space written as `/`: a path
+// written on Windows (`mtllib ..\mats\a.mtl`), which tinyobjloader's reading would make
+// `..matsa.mtl` (a `\` escapes the next character there); `a\ b.mtl` stays one name with a space.
+std::string mtllib_separators(std::string_view rest);
+
+// `text` (an OBJ file) as tinyobjloader is to read it: the name of every `usemtl` line written as
+// its material_key, and every `mtllib` line's rest through mtllib_separators; lines, line ends and
+// everything else unchanged. `usemtl_lines` receives the file's `usemtl` lines in order.
+std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine>& usemtl_lines);
 
 // The warning for a `usemtl` line whose material no MTL file loaded before it defines, as both OBJ
 // readers write it before load_obj words it for the user: tinyobjloader's words,

@@ -95,8 +95,9 @@ void parse_in_parallel(std::string_view text, const ObjSample& sample,
     if (f) std::rethrow_exception(f);
 }
 
-// tinyobjloader's reading of the text after `mtllib `: names split at spaces, `\` escapes the next
-// character, and the last (possibly empty) name always counts.
+// tinyobjloader's reading of the text after `mtllib ` (after mtllib_separators, as the reference
+// path hands it over): names split at spaces, `\` escapes the next character, and the last
+// (possibly empty) name always counts.
 std::vector<std::string> mtllib_names(const std::string& text) {
   std::vector<std::string> names;
   std::string name;
@@ -147,7 +148,7 @@ std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const
         current = it == by_name.end() ? -1 : it->second;
       } else if (e.kind == ObjEvent::mtllib) {
         bool found = false;
-        for (const std::string& name : mtllib_names(e.text)) {
+        for (const std::string& name : mtllib_names(mtllib_separators(e.text))) {
           if (loaded.count(name) > 0) {
             found = true;
             continue;

@@ -274,7 +274,7 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
     const double before_check = seconds_since(t0);
     large_faces = check_obj_text(text, path);
     clock.check = seconds_since(t0) - before_check;
-    std::istringstream in{with_material_keys(text, usemtl_lines)};
+    std::istringstream in{text_for_tinyobjloader(text, usemtl_lines)};
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, false))
       throw InputError(path, 0, "cannot parse: " + err);
     warn = with_usemtl_lines(warn, usemtl_lines);

@@ -1,4 +1,4 @@
-// usemtl_name, material_key and with_material_keys: a `usemtl` line names the whole rest of its
+// usemtl_name, material_key and text_for_tinyobjloader: a `usemtl` line names the whole rest of its
 // line, and the text handed to tinyobjloader keeps every line and line end.
 #include "scene/material_names.h"
 
@@ -33,7 +33,7 @@ TEST(MaterialNames, OnlyUsemtlLinesAreRewrittenAndLineEndsStay) {
   const std::string want = std::string("v 0 0 0\r\nusemtl Material\x1f#25\r\n  usemtl A\x1f") +
                            "B\nusemtl C\x1f" + "D\rg a b\nf 1 2 3\n# usemtl x y\nusemtl ";
   std::vector<UsemtlLine> lines;
-  EXPECT_EQ(with_material_keys(text, lines), want);
+  EXPECT_EQ(text_for_tinyobjloader(text, lines), want);
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_EQ(lines[0].line, 2u);
   EXPECT_EQ(lines[0].key, "Material\x1f#25");
@@ -45,8 +45,20 @@ TEST(MaterialNames, OnlyUsemtlLinesAreRewrittenAndLineEndsStay) {
   EXPECT_EQ(lines[3].line, 8u);
   EXPECT_EQ(lines[3].key, "");
   lines.clear();
-  EXPECT_EQ(with_material_keys("f 1 2 3\n", lines), "f 1 2 3\n");
-  EXPECT_EQ(with_material_keys("", lines), "");
+  EXPECT_EQ(text_for_tinyobjloader("f 1 2 3\n", lines), "f 1 2 3\n");
+  EXPECT_EQ(text_for_tinyobjloader("", lines), "");
+  EXPECT_TRUE(lines.empty());
+}
+
+TEST(MaterialNames, MtllibBackslashesAreSeparatorsUnlessTheyEscapeASpace) {
+  EXPECT_EQ(mtllib_separators("..\\mats\\a.mtl"), "../mats/a.mtl");
+  EXPECT_EQ(mtllib_separators("C:\\Users\\me\\m.mtl b.mtl"), "C:/Users/me/m.mtl b.mtl");
+  EXPECT_EQ(mtllib_separators("a\\ b.mtl"), "a\\ b.mtl");
+  EXPECT_EQ(mtllib_separators("end\\"), "end/");
+  std::vector<UsemtlLine> lines;
+  EXPECT_EQ(text_for_tinyobjloader(
+                "mtllib ..\\m\\a.mtl\r\n\tmtllib\ta\\ b\\c.mtl\nmtllibx\\y\n# mtllib a\\b\n", lines),
+            "mtllib ../m/a.mtl\r\n\tmtllib\ta\\ b/c.mtl\nmtllibx\\y\n# mtllib a\\b\n");
   EXPECT_TRUE(lines.empty());
 }
 

@@ -144,22 +144,27 @@ TEST(ObjLoader, ReadsMaterialsFromTheMtl) {
 }
 
 TEST(ObjLoader, MtlLibrariesNamedOnAnotherSystemAreFound) {
-  // an `mtllib` name written on a case-insensitive file system, on both readers (the fast one,
-  // and tinyobjloader's for a file with an `l` line). A `\` is an escape there, as tinyobjloader
-  // reads the line (`a\ b.mtl` is one name), so it is no separator.
+  // `mtllib` names written on Windows — another case, `\` separators, another machine's absolute
+  // path — on both readers (the fast one, and tinyobjloader's for a file with an `l` line)
   const std::string dir = test::temp_dir("obj_mtllib_case");
   std::filesystem::create_directories(dir + "/materials");
   test::write_file(dir + "/materials/red.mtl", "newmtl red\nKd 1 0 0\n");
-  const std::string body = "mtllib Materials/Red.MTL\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
-  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
-    test::write_file(dir + "/m.obj", body + extra);
-    ObjLoadTimes times;
-    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
-    EXPECT_EQ(times.fast, extra.empty());
-    ASSERT_EQ(m.materials.size(), 1u) << (m.warnings.empty() ? "" : m.warnings[0]);
-    EXPECT_EQ(m.materials[0].Kd, (Vec3f{1, 0, 0}));
-    EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{0}));
-  }
+  // beside the OBJ, for the absolute path (another Kd, to tell which file was read)
+  test::write_file(dir + "/red.mtl", "newmtl red\nKd 0 0 1\n");
+  const std::string body = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+  for (const auto& [mtllib, kd] : {std::pair<std::string, Vec3f>{"Materials/Red.MTL", {1, 0, 0}},
+                                   {".\\materials\\red.mtl", {1, 0, 0}},
+                                   {"C:\\Users\\me\\Materials\\RED.mtl", {0, 0, 1}}})
+    for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
+      SCOPED_TRACE(mtllib);
+      test::write_file(dir + "/m.obj", "mtllib " + mtllib + "\n" + body + extra);
+      ObjLoadTimes times;
+      const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
+      EXPECT_EQ(times.fast, extra.empty());
+      ASSERT_EQ(m.materials.size(), 1u) << (m.warnings.empty() ? "" : m.warnings[0]);
+      EXPECT_EQ(m.materials[0].Kd, kd);
+      EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{0}));
+    }
 }
 
 TEST(ObjLoader, MtlLibraryNamesWithSpacesAreFound) {
