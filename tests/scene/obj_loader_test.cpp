@@ -31,6 +31,20 @@ std::string error_of(const std::string& obj_text, std::string* path_out = nullpt
   return "";
 }
 
+// Loads `obj`, written to dir/m.obj, on both readers — as it is (the fast reader takes it) and
+// with an `l` line appended (which sends it to tinyobjloader's path) — and runs `check` on each.
+template <typename Check>
+void on_both_readers(const std::string& dir, const std::string& obj, Check check) {
+  for (const bool fast : {true, false}) {
+    SCOPED_TRACE(fast ? "fast reader" : "tinyobjloader's path");
+    test::write_file(dir + "/m.obj", obj + (fast ? "" : "l 1 2\n"));
+    ObjLoadTimes times;
+    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
+    EXPECT_EQ(times.fast, fast);
+    check(m);
+  }
+}
+
 double area(const TriangleMesh& m, std::size_t t) {
   const Vec3f a = m.vertex(t, 0), b = m.vertex(t, 1), c = m.vertex(t, 2);
   return 0.5 * length(cross(Vec3d(b - a), Vec3d(c - a)));
@@ -155,16 +169,12 @@ TEST(ObjLoader, MtlLibrariesNamedOnAnotherSystemAreFound) {
   for (const auto& [mtllib, kd] : {std::pair<std::string, Vec3f>{"Materials/Red.MTL", {1, 0, 0}},
                                    {".\\materials\\red.mtl", {1, 0, 0}},
                                    {"C:\\Users\\me\\Materials\\RED.mtl", {0, 0, 1}}})
-    for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
+    on_both_readers(dir, "mtllib " + mtllib + "\n" + body, [&](const ObjModel& m) {
       SCOPED_TRACE(mtllib);
-      test::write_file(dir + "/m.obj", "mtllib " + mtllib + "\n" + body + extra);
-      ObjLoadTimes times;
-      const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
-      EXPECT_EQ(times.fast, extra.empty());
       ASSERT_EQ(m.materials.size(), 1u) << (m.warnings.empty() ? "" : m.warnings[0]);
       EXPECT_EQ(m.materials[0].Kd, kd);
       EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{0}));
-    }
+    });
 }
 
 TEST(ObjLoader, MtlLibraryNamesWithSpacesAreFound) {
@@ -174,18 +184,14 @@ TEST(ObjLoader, MtlLibraryNamesWithSpacesAreFound) {
   test::write_file(dir + "/Low Poly Tree.mtl", "newmtl bark\nKd 0.5 0.25 0\n");
   test::write_file(dir + "/leaf.mtl", "newmtl leaf\nKd 0 1 0\n");
   const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl bark\nf 1 2 3\nusemtl leaf\nf 1 2 3\n";
-  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
-    test::write_file(dir + "/m.obj", "mtllib Low Poly Tree.mtl\nmtllib gone.mtl leaf.mtl\n" + tri + extra);
-    ObjLoadTimes times;
-    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
-    EXPECT_EQ(times.fast, extra.empty());
+  on_both_readers(dir, "mtllib Low Poly Tree.mtl\nmtllib gone.mtl leaf.mtl\n" + tri, [&](const ObjModel& m) {
     ASSERT_EQ(m.materials.size(), 2u);
     EXPECT_EQ(m.materials[0].name, "bark");
     EXPECT_EQ(m.materials[1].name, "leaf");
     EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{0, 1}));
     EXPECT_EQ(m.warnings, (std::vector<std::string>{dir + "/m.obj: material file " + dir +
                                                     "/gone.mtl not found; using default materials"}));
-  }
+  });
   // no joined name exists: each piece warns, as before
   test::write_file(dir + "/n.obj", "mtllib no such.mtl\n" + tri);
   const ObjModel n = load_obj(dir + "/n.obj");
@@ -205,18 +211,14 @@ TEST(ObjLoader, MaterialNamesWithSpacesAreTheirWholeName) {
   const std::string obj =
       "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Material #26\nf 1 2 3\n"
       "usemtl  Material #25 \r\nf 1 2 3\nusemtl plain\nf 1 2 3\nusemtl Material\nf 1 2 3\n";
-  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
-    test::write_file(dir + "/m.obj", obj + extra);
-    ObjLoadTimes times;
-    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
-    EXPECT_EQ(times.fast, extra.empty());
+  on_both_readers(dir, obj, [&](const ObjModel& m) {
     ASSERT_EQ(m.materials.size(), 3u);
     EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{1, 0, 2, -1}));
     EXPECT_EQ(m.warnings,
               (std::vector<std::string>{dir + "/m.obj:11: usemtl 'Material': no MTL file loaded before it "
                                               "(mtllib) defines that material; drawn with the default "
                                               "material"}));
-  }
+  });
 }
 
 TEST(ObjLoader, AMissingMaterialIsOneWarningWithItsCount) {
@@ -225,11 +227,7 @@ TEST(ObjLoader, AMissingMaterialIsOneWarningWithItsCount) {
   for (int i = 0; i < 50; ++i) obj += "usemtl missing\nf 1 2 3\n";
   obj += "usemtl other\nf 1 2 3\n";
   const std::string dir = test::temp_dir("obj_missing_material");
-  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
-    test::write_file(dir + "/m.obj", obj + extra);
-    ObjLoadTimes times;
-    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
-    EXPECT_EQ(times.fast, extra.empty());
+  on_both_readers(dir, obj, [&](const ObjModel& m) {
     EXPECT_EQ(
         m.warnings,
         (std::vector<std::string>{
@@ -238,7 +236,7 @@ TEST(ObjLoader, AMissingMaterialIsOneWarningWithItsCount) {
             dir + "/m.obj:104: usemtl 'other': no MTL file loaded before it (mtllib) defines that material; "
                   "drawn with the default material"}));
     EXPECT_EQ(m.triangle_material, std::vector<int32_t>(51, -1));
-  }
+  });
 }
 
 TEST(ObjLoader, AUsemtlBeforeItsMtllibIsNamedByItsLine) {
@@ -248,17 +246,13 @@ TEST(ObjLoader, AUsemtlBeforeItsMtllibIsNamedByItsLine) {
   const std::string obj =
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nmtllib m.mtl\nusemtl a\nf 1 2 3\n"
       "g\nusemtl b\nf 1 2 3\nusemtl a\nf 1 2 3\n";
-  for (const std::string& extra : {std::string(), std::string("l 1 2\n")}) {
-    test::write_file(dir + "/m.obj", obj + extra);
-    ObjLoadTimes times;
-    const ObjModel m = load_obj(dir + "/m.obj", {}, &times);
-    EXPECT_EQ(times.fast, extra.empty());
+  on_both_readers(dir, obj, [&](const ObjModel& m) {
     EXPECT_EQ(m.triangle_material, (std::vector<int32_t>{-1, 0, -1, 0}));
     const std::string tail =
         "': no MTL file loaded before it (mtllib) defines that material; drawn with the default material";
     EXPECT_EQ(m.warnings, (std::vector<std::string>{dir + "/m.obj:4: usemtl 'a" + tail,
                                                     dir + "/m.obj:10: usemtl 'b" + tail}));
-  }
+  });
 }
 
 TEST(ObjLoader, MissingTextureIsAWarning) {
