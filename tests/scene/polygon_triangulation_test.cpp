@@ -268,7 +268,7 @@ TEST(PolygonTriangulation, AConcaveQuadIsSplitFromItsReflexCorner) {
   EXPECT_EQ(t, (Triangles{{0, 1, 2}, {0, 2, 3}}));
 }
 
-TEST(PolygonTriangulation, TenThousandCornersTakeNoLongerThanTheLoaderAllows) {
+TEST(PolygonTriangulation, TheLargestFaceTheReadersAcceptGivesEveryTriangle) {
   // the largest face the OBJ readers accept (kMaxFaceCorners), concave all round: a star
   std::vector<Vec3f> star;
   for (int k = 0; k < 10000; ++k) {
