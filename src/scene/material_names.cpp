@@ -17,7 +17,7 @@ bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 }  // namespace
 
-std::string usemtl_name(std::string_view after_keyword) {
+std::string written_material_name(std::string_view after_keyword) {
   while (!after_keyword.empty() && is_blank(after_keyword.front())) after_keyword.remove_prefix(1);
   while (!after_keyword.empty() && is_blank(after_keyword.back())) after_keyword.remove_suffix(1);
   return std::string(after_keyword);
@@ -64,7 +64,7 @@ std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine
       continue;
     }
     // tinyobjloader matches the keyword as a prefix (`usemtlname` too) and skips the blanks after it
-    const std::string key = material_key(usemtl_name(line.substr(indent + 6)));
+    const std::string key = material_key(written_material_name(line.substr(indent + 6)));
     out.append(line.substr(0, indent + 6)).append(" ").append(key);
     out.append(end);
     usemtl_lines.push_back({line_no, key});

@@ -10,10 +10,10 @@
 
 namespace rayvec {
 
-// The material a `usemtl` line names, given the text after the keyword (`usemtl name`, or
-// `usemtlname` as tinyobjloader also reads it): leading and trailing blanks (space, tab, CR)
-// removed, inner ones kept — as `newmtl` names are read (mtl_parser.cpp).
-std::string usemtl_name(std::string_view after_keyword);
+// The material a `newmtl` or `usemtl` line names, given the text after the keyword (`usemtl
+// name`, or `usemtlname` as tinyobjloader also reads it): leading and trailing blanks (space, tab,
+// CR) removed, inner ones kept. One rule for both, so a name matches itself.
+std::string written_material_name(std::string_view after_keyword);
 
 // A material name as a key that tinyobjloader's `usemtl` reads whole (its first word): every
 // space and tab written as the unit separator 0x1F; material_name undoes it. The key of a name

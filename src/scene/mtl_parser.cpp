@@ -7,6 +7,7 @@
 #include "io/csv_fields.h"
 #include "io/input_error.h"
 #include "io/text_file.h"
+#include "scene/material_names.h"
 
 namespace rayvec {
 namespace {
@@ -129,7 +130,7 @@ std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& pat
     if (key.empty() || key.front() == '#') continue;
     if (key == "newmtl") {
       // A nameless material (as tinyobjloader, kept but unreachable: `usemtl` needs a name).
-      out.push_back(new_material(std::string(trim(rest)), line_no));
+      out.push_back(new_material(written_material_name(rest), line_no));
       has_tr = false;
       continue;
     }

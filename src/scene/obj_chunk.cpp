@@ -291,7 +291,7 @@ void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
       while (!in.at_line_end()) in.jump(in.pos() + 1);
       chunk.events.push_back(
           {ObjEvent::usemtl, chunk.lines, chunk.triangles.size(),
-           usemtl_name(std::string_view(start, static_cast<std::size_t>(in.pos() - start)))});
+           written_material_name(std::string_view(start, static_cast<std::size_t>(in.pos() - start)))});
       ok = in.next_line();
     } else if (key == "mtllib" && !in.at_line_end()) {
       in.jump(line + 7);

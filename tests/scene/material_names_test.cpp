@@ -1,4 +1,4 @@
-// usemtl_name, material_key and text_for_tinyobjloader: a `usemtl` line names the whole rest of its
+// written_material_name, material_key and text_for_tinyobjloader: a `usemtl` line names the whole rest of its
 // line, and the text handed to tinyobjloader keeps every line and line end.
 #include "scene/material_names.h"
 
@@ -11,10 +11,10 @@ namespace rayvec {
 namespace {
 
 TEST(MaterialNames, UsemtlNamesTheRestOfItsLine) {
-  EXPECT_EQ(usemtl_name(" Material #25"), "Material #25");
-  EXPECT_EQ(usemtl_name("\t Hard Shiny  Plastic \t\r"), "Hard Shiny  Plastic");
-  EXPECT_EQ(usemtl_name("red"), "red");  // `usemtlred`, as tinyobjloader reads it too
-  EXPECT_EQ(usemtl_name("   "), "");
+  EXPECT_EQ(written_material_name(" Material #25"), "Material #25");
+  EXPECT_EQ(written_material_name("\t Hard Shiny  Plastic \t\r"), "Hard Shiny  Plastic");
+  EXPECT_EQ(written_material_name("red"), "red");  // `usemtlred`, as tinyobjloader reads it too
+  EXPECT_EQ(written_material_name("   "), "");
 }
 
 TEST(MaterialNames, KeysHaveNoBlanksAndGiveTheNameBack) {
