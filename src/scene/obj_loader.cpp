@@ -131,6 +131,7 @@ void split_warnings(const std::string& text, const std::string& path, std::vecto
   std::istringstream lines(text);
   struct Distinct {
     std::string text;
+    bool usemtl;  // a missing material's, counted by lines
     std::size_t count;
   };
   std::vector<Distinct> distinct;
@@ -146,7 +147,8 @@ void split_warnings(const std::string& text, const std::string& path, std::vecto
     }
     std::string key, id = line;
     std::size_t line_no = 0;
-    if (parse_unknown_material(line, key, line_no)) {
+    const bool usemtl = parse_unknown_material(line, key, line_no);
+    if (usemtl) {
       id = "usemtl\n" + key;
       line =
           (line_no > 0 ? ":" + std::to_string(line_no) : std::string()) + ": usemtl '" + material_name(key) +
@@ -156,14 +158,13 @@ void split_warnings(const std::string& text, const std::string& path, std::vecto
     }
     const auto [it, fresh] = at.emplace(id, distinct.size());
     if (fresh)
-      distinct.push_back({std::move(line), 1});
+      distinct.push_back({std::move(line), usemtl, 1});
     else
       ++distinct[it->second].count;
   }
   for (const Distinct& d : distinct) {
-    const bool usemtl = d.text.find(": usemtl '") != std::string::npos;
     const std::string more = d.count < 2 ? ""
-                             : usemtl    ? " (and on " + std::to_string(d.count - 1) + " later lines)"
+                             : d.usemtl  ? " (and on " + std::to_string(d.count - 1) + " later lines)"
                                          : " (" + std::to_string(d.count) + " times)";
     warnings.push_back(path + d.text + more);
   }
