@@ -3,7 +3,6 @@
 #include <omp.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <string_view>
 
 #include "accel/bvh_accelerator.h"
@@ -63,14 +62,13 @@ void register_info_command(CommandLine& cli) {
             "else formed per step\n",
             kFormedNormalsFrom, kBvhBytesPerTriangle);
         std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
-        const char* limit_env = std::getenv("RAYVEC_MAX_INPUT_MB");
         if (const auto problem = input_limit_problem())
           std::printf("input limit: %zu MB; %s, so every command that reads input refuses to start\n",
                       max_input_bytes() / 1000000, problem->c_str());
         else
-          std::printf(
-              "input limit: %zu MB (%s)\n", max_input_bytes() / 1000000,
-              limit_env && *limit_env ? "RAYVEC_MAX_INPUT_MB" : "the default; RAYVEC_MAX_INPUT_MB sets it");
+          std::printf("input limit: %zu MB (%s)\n", max_input_bytes() / 1000000,
+                      input_limit_from_environment() ? "RAYVEC_MAX_INPUT_MB"
+                                                     : "the default; RAYVEC_MAX_INPUT_MB sets it");
         std::printf("compiler: g++ %s, OpenMP %d\n", __VERSION__, _OPENMP);
         print_cuda_info();
         return 0;

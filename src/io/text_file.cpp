@@ -159,6 +159,8 @@ std::size_t max_input_bytes() {
   return (mb && *mb ? *mb : kDefaultLimitMb) * 1000000;
 }
 
+bool input_limit_from_environment() { return limit_from_environment().value_or(0) > 0; }
+
 std::optional<std::string> input_limit_problem() {
   if (limit_from_environment()) return std::nullopt;
   return "RAYVEC_MAX_INPUT_MB: '" + printable(std::getenv("RAYVEC_MAX_INPUT_MB")) +

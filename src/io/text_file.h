@@ -18,6 +18,9 @@ std::size_t max_input_bytes();
 // max_input_bytes would take the default, against what the user asked.
 std::optional<std::string> input_limit_problem();
 
+// Whether RAYVEC_MAX_INPUT_MB sets the limit (set and well formed), rather than the default.
+bool input_limit_from_environment();
+
 // The whole file as text. Throws InputError(`path: cannot read: <reason>`) when it cannot be opened
 // or read (missing file, a directory, no permission). A UTF-8 byte-order mark is dropped (editors
 // on Windows write one; it would otherwise glue itself to the first keyword or number). Throws
