@@ -252,6 +252,22 @@ class ChunkParser {
   std::vector<Corner> corners_;  // the face being read; kept for its capacity
 };
 
+// The rest of an `s` line as tinyobjloader reads it: nothing (the line is ignored), `off…` (group
+// 0) or a group number. Other text tinyobjloader reads with atoi (`s 1.5`, `s -2`, `s x`): left to
+// the reference path.
+bool smoothing_line(Cursor& in, ObjChunk& chunk) {
+  in.skip_blanks();
+  const std::string_view value = in.token();
+  if (value.empty()) return true;
+  uint32_t group = 0;
+  if (value.substr(0, 3) != "off") {
+    if (value.size() > 9 || !std::all_of(value.begin(), value.end(), is_digit)) return false;
+    for (const char c : value) group = group * 10 + static_cast<uint32_t>(c - '0');
+  }
+  chunk.smoothing.push_back({chunk.triangles.size(), group});
+  return true;
+}
+
 }  // namespace
 
 void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
@@ -305,10 +321,12 @@ void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
       if (in.at_line_end())
         chunk.events.push_back({ObjEvent::empty_group, chunk.lines, chunk.triangles.size(), {}});
       ok = in.next_line();
+    } else if (key == "s" && !in.at_line_end()) {
+      ok = smoothing_line(in, chunk) && in.next_line();
     } else if (key == "t") {
       ok = exponents_accepted(in) && in.next_line();  // tags: their numbers are not used
     } else {
-      ok = in.next_line();  // blank lines, comments, o, s and what tinyobjloader ignores
+      ok = in.next_line();  // blank lines, comments, o and what tinyobjloader ignores
     }
   }
   chunk.ok = ok;

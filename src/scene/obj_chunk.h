@@ -1,9 +1,9 @@
 // parse_obj_chunk: rayvec's fast OBJ tokenizer for one piece of a file (a run of whole lines), the
 // first stage of load_obj_fast (obj_fast.h). It accepts only a strict subset of OBJ whose meaning is
 // certain to match tinyobjloader's — v/vn/vt with plain decimal numbers, faces of 3 to
-// kMaxFaceCorners corners with `a`, `a/b`, `a//c` or `a/b/c` corners, usemtl/mtllib/g/o/s/t lines,
-// comments — and reports anything else (an error, `l`/`p`/`vw` lines, lone CR line ends) as "not
-// mine", so that the caller hands the whole file to the reference path instead.
+// kMaxFaceCorners corners with `a`, `a/b`, `a//c` or `a/b/c` corners, usemtl/mtllib/g/o/t lines, `s` with a
+// group number or `off`, comments — and reports anything else (an error, `l`/`p`/`vw` lines, lone CR line
+// ends) as "not mine", so that the caller hands the whole file to the reference path instead.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -50,6 +50,12 @@ struct ObjChunk {
   // positive value is an index the chunk does not define itself, valid only if earlier chunks do.
   std::array<int64_t, 3> highest_ahead{INT64_MIN, INT64_MIN, INT64_MIN};
   std::vector<ObjEvent> events;
+  // Each `s` line: the chunk's triangles before it and the smoothing group it starts (0 = off).
+  struct Smoothing {
+    std::size_t triangle;
+    uint32_t group;
+  };
+  std::vector<Smoothing> smoothing;
   std::size_t lines = 0;
   bool ok = true;  // false: the text needs the reference path
 };

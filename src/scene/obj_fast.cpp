@@ -1,5 +1,5 @@
 // The pieces of load_obj_fast: split at line ends, parse the pieces in parallel (obj_chunk.cpp),
-// check the indices that cross pieces, then replay the order-dependent lines (mtllib, usemtl) and
+// check the indices that cross pieces, then replay the order-dependent lines (mtllib, usemtl, s) and
 // join. OBJ indices are global and may be relative, so a piece is parsed without knowing how many
 // vertices come before it: relative indices are fixed up afterwards (ObjChunk::relative).
 #include "scene/obj_fast.h"
@@ -173,6 +173,30 @@ std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const
   return material;
 }
 
+// The smoothing group of every triangle, the last `s` line before it counting (tinyobjloader's
+// state runs across pieces, `g` and `o`); empty when every triangle's is 0 (ObjModel).
+std::vector<uint32_t> replay_smoothing(const std::vector<ObjChunk>& chunks, const std::vector<Offsets>& at,
+                                       std::size_t triangles) {
+  std::vector<uint32_t> group;
+  uint32_t current = 0;
+  std::size_t from = 0;  // first triangle not yet given a group
+  for (std::size_t i = 0; i < chunks.size(); ++i)
+    for (const ObjChunk::Smoothing& s : chunks[i].smoothing) {
+      const std::size_t triangle = at[i].triangles + s.triangle;
+      if (current != 0 && triangle > from) {
+        group.resize(triangles, 0);
+        std::fill(group.begin() + std::ptrdiff_t(from), group.begin() + std::ptrdiff_t(triangle), current);
+      }
+      from = triangle;
+      current = s.group;
+    }
+  if (current != 0 && triangles > from) {
+    group.resize(triangles, 0);
+    std::fill(group.begin() + std::ptrdiff_t(from), group.end(), current);
+  }
+  return group;
+}
+
 // The quads' second split where quad_splits_at_0_2 says so (the chunks store every quad as
 // (0,1,2), (0,2,3)).
 void split_quads(const std::vector<uint32_t>& quads, ObjModel& m) {
@@ -285,6 +309,7 @@ bool load_obj_pieces(std::string_view text, const ObjSample& sample,
   // From here on the text is ours: no more fallbacks, so the MTL files load exactly once.
   ObjModel out;
   out.triangle_material = replay_materials(chunks, at, at.back().triangles, load_mtl, warn, err);
+  out.triangle_smoothing = replay_smoothing(chunks, at, at.back().triangles);
   fill_corner_indices(chunks, &ObjChunk::triangle_normals);
   fill_corner_indices(chunks, &ObjChunk::triangle_texcoords);
   std::vector<uint32_t> quads;

@@ -215,6 +215,8 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
       split.clear();
       triangulate_polygon(corner_positions, split);
       const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+      const uint32_t smoothing =
+          f < shape.mesh.smoothing_group_ids.size() ? shape.mesh.smoothing_group_ids[f] : 0;
       for (const std::array<uint32_t, 3>& corner : split) {
         std::array<uint32_t, 3> tri{};
         std::array<int32_t, 3> tri_n = kNoCornerIndices, tri_t = kNoCornerIndices;
@@ -229,6 +231,7 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
         model.triangle_texcoords.push_back(tri_t);
         model.triangle_material.push_back(
             material >= 0 && material < static_cast<int>(material_count) ? material : -1);
+        model.triangle_smoothing.push_back(smoothing);
       }
       first += corners;
     }
@@ -242,6 +245,9 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
   };
   drop_if_unused(model.triangle_normals);
   drop_if_unused(model.triangle_texcoords);
+  if (std::all_of(model.triangle_smoothing.begin(), model.triangle_smoothing.end(),
+                  [](uint32_t g) { return g == 0; }))
+    std::vector<uint32_t>().swap(model.triangle_smoothing);
 }
 
 }  // namespace

@@ -27,6 +27,10 @@ struct ObjModel {
   std::vector<std::array<int32_t, 3>> triangle_normals;
   std::vector<std::array<float, 2>> texcoords;
   std::vector<std::array<int32_t, 3>> triangle_texcoords;
+  // per triangle: the smoothing group of its face (`s N`; 0 = `s off` or none), empty when no face is
+  // in one. The scene shades a triangle of a group whose face gives no normals with normals averaged
+  // over the group (smooth_normals.h).
+  std::vector<uint32_t> triangle_smoothing;
   std::vector<std::string> warnings;  // non-fatal problems (e.g. a missing MTL file), one per line
 };
 

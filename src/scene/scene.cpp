@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <unordered_map>
 
 #include "platform/large_buffer.h"
 #include "scene/obj_loader.h"
+#include "scene/smooth_normals.h"
 #include "scene/texture_reads.h"
 
 namespace rayvec {
@@ -82,6 +84,32 @@ namespace {
 std::array<uint32_t, 3>& corner_slot(std::vector<std::array<uint32_t, 3>>& corners, std::size_t t) {
   if (corners.size() <= t) corners.resize(t + 1, {Scene::kNoCorners, Scene::kNoCorners, Scene::kNoCorners});
   return corners[t];
+}
+
+// Shading normals for the object's triangles from `first_tri` on that its OBJ puts in a smoothing
+// group without giving them normals (smooth_normals.h), from the scene's transformed positions: a
+// non-uniform scale changes the angles that weight them.
+void add_smooth_normals(Scene& scene, const ObjModel& model, std::size_t first_tri) {
+  const std::vector<uint32_t>& group = model.triangle_smoothing;
+  if (group.size() != model.mesh.size()) return;  // none (ObjModel: empty without groups)
+  std::vector<uint32_t> wanted;
+  for (std::size_t t = 0; t < group.size(); ++t) {
+    const std::size_t tri = first_tri + t;
+    const bool has_normals =
+        tri < scene.normal_corners.size() && scene.normal_corners[tri][0] != Scene::kNoCorners;
+    if (group[t] != 0 && !has_normals) wanted.push_back(static_cast<uint32_t>(t));
+  }
+  if (wanted.empty()) return;
+  const std::span<const std::array<uint32_t, 3>> triangles(scene.mesh.triangles.data() + first_tri,
+                                                           group.size());
+  const SmoothedNormals smooth = smooth_normals(scene.mesh.positions, triangles, group, wanted);
+  const auto first = static_cast<uint32_t>(scene.normal_table.size());
+  scene.normal_table.insert(scene.normal_table.end(), smooth.normals.begin(), smooth.normals.end());
+  for (std::size_t i = 0; i < wanted.size(); ++i) {
+    const auto& c = smooth.corners[i];
+    if (c[0] != kNoSmoothNormal)
+      corner_slot(scene.normal_corners, first_tri + wanted[i]) = {first + c[0], first + c[1], first + c[2]};
+  }
 }
 
 }  // namespace
@@ -190,6 +218,7 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
                                         first_uv + uint32_t(idx[corner[2]])};
     }
   }
+  add_smooth_normals(*this, model, first_tri);
   warnings.insert(warnings.end(), model.warnings.begin(), model.warnings.end());
   ++object_count_;
 }

@@ -98,9 +98,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const rayvec::ObjModel &a = fast.model, &b = ref.model;
   if (fast.error != ref.error || a.mesh.triangles != b.mesh.triangles ||
       a.triangle_normals != b.triangle_normals || a.triangle_texcoords != b.triangle_texcoords ||
-      a.triangle_material != b.triangle_material || a.warnings != b.warnings ||
-      a.materials.size() != b.materials.size() || !close(a.mesh.positions, b.mesh.positions, 3) ||
-      !close(a.normals, b.normals, 3) || !close(a.texcoords, b.texcoords, 2))
+      a.triangle_material != b.triangle_material || a.triangle_smoothing != b.triangle_smoothing ||
+      a.warnings != b.warnings || a.materials.size() != b.materials.size() ||
+      !close(a.mesh.positions, b.mesh.positions, 3) || !close(a.normals, b.normals, 3) ||
+      !close(a.texcoords, b.texcoords, 2))
     __builtin_trap();
   return 0;
 }

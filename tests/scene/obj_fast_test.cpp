@@ -72,6 +72,7 @@ bool expect_same_as_reference(const std::string& path) {
     EXPECT_EQ(a.triangle_normals, b.triangle_normals) << what;
     EXPECT_EQ(a.triangle_texcoords, b.triangle_texcoords) << what;
     EXPECT_EQ(a.triangle_material, b.triangle_material) << what;
+    EXPECT_EQ(a.triangle_smoothing, b.triangle_smoothing) << what;
     EXPECT_EQ(a.warnings, b.warnings) << what;
     expect_close(a.mesh.positions, b.mesh.positions, 3, what + " position");
     expect_close(a.normals, b.normals, 3, what + " normal");

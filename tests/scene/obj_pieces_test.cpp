@@ -65,6 +65,7 @@ void expect_identical(const Result& a, const Result& b, const std::string& what)
   EXPECT_EQ(x.triangle_normals, y.triangle_normals) << what;
   EXPECT_EQ(x.triangle_texcoords, y.triangle_texcoords) << what;
   EXPECT_EQ(x.triangle_material, y.triangle_material) << what;
+  EXPECT_EQ(x.triangle_smoothing, y.triangle_smoothing) << what;
 }
 
 // The line ends of `text`: the places a cut may go.
@@ -127,6 +128,10 @@ TEST(ObjPieces, CutsChangeNothingOnEdgeCases) {
                                          "mtllibs"));
   EXPECT_TRUE(expect_cuts_change_nothing(
       kQuad + "g\ng \no\no x\ns off\ns 1\nt x 1/0/0 5\ng a b\nf 1 2 3\ng\n", "groups"));
+  EXPECT_TRUE(expect_cuts_change_nothing(kQuad +
+                                             "s 1\nf 1 2 3\nf 1 2 3 4\ng x\nf 5 6 7\ns\nf 1 2 3\ns off\n"
+                                             "f 1 2 3 4 5\ns 12\nf 1 2 3\ns 0\nf 1 2 3\ns\t7 8\nf 4 3 2\n",
+                                         "smoothing groups"));
   EXPECT_TRUE(expect_cuts_change_nothing(
       "# c\n\n  \t\nv 0 0 0 1 0 0\r\nv\t1 0 0\t\r\nv 0 1 0 # c\n f 1 2 3 \t\nvp 1 2\nf 1 2 3", "blanks"));
   EXPECT_TRUE(
