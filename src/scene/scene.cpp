@@ -105,10 +105,12 @@ void add_smooth_normals(Scene& scene, const ObjModel& model, std::size_t first_t
   const SmoothedNormals smooth = smooth_normals(scene.mesh.positions, triangles, group, wanted);
   const auto first = static_cast<uint32_t>(scene.normal_table.size());
   scene.normal_table.insert(scene.normal_table.end(), smooth.normals.begin(), smooth.normals.end());
+  make_room(scene.normal_corners, first_tri + group.size());
+  corner_slot(scene.normal_corners, first_tri + group.size() - 1);  // every slot of the object at once
   for (std::size_t i = 0; i < wanted.size(); ++i) {
     const auto& c = smooth.corners[i];
     if (c[0] != kNoSmoothNormal)
-      corner_slot(scene.normal_corners, first_tri + wanted[i]) = {first + c[0], first + c[1], first + c[2]};
+      scene.normal_corners[first_tri + wanted[i]] = {first + c[0], first + c[1], first + c[2]};
   }
 }
 
