@@ -158,11 +158,19 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
   EXPECT_TRUE(same_on("keyhole",
                       "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 0\nv 1 1 0\nv 1 3 0\nv 3 3 0\nv 3 1 0\n"
                       "f 1 2 3 4 1 5 6 7 8 5\n"));
+  // lines and points: read and left out; their indices are not checked (tinyobjloader does not)
+  EXPECT_TRUE(same_on("lines_and_points", quad + "vt 0 0\nvn 0 0 1\nl 1 2\nf 1 2 3\nl 1/1 2/1 -1/1\n"
+                                                 "p 1 2 3 4\np -1//1\nl 1/1/1 99\nl\np \nf 2 3 4\n"));
+  EXPECT_TRUE(same_on("smoothing", quad + "s 1\nf 1 2 3\nf 1 2 3 4 5\ns off\nf 1 2 3\ns 3\nf 2 3 4\n"));
   // handed to the reference, which must still give its own result or error
   const std::pair<const char*, std::string> handed[] = {
       {"forward", "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"},
       {"lone_cr", quad + "f 1 2 3\rf 2 3 4\r"},
-      {"lines", quad + "l 1 2\nf 1 2 3\n"},
+      {"line_with_comment", quad + "l 1 2 # edge\nf 1 2 3\n"},
+      {"line_zero_index", quad + "l 1 0\nf 1 2 3\n"},
+      {"point_word", quad + "p 1 x\nf 1 2 3\n"},
+      {"point_of_blanks", quad + "p \t\nf 1 2 3\n"},
+      {"smoothing_atoi", quad + "s 1.5\nf 1 2 3\ns -2\nf 1 2 3\ns on\nf 1 2 3\n"},
       {"bad_index", quad + "f 1 2 9\n"},
       {"zero_index", quad + "f 0 1 2\n"},
       {"nan", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
