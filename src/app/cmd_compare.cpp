@@ -24,6 +24,18 @@ void check_limit(double value, const char* name) {
     throw InputError(std::string(name) + ": must be >= 0 (or -1 for no limit)");
 }
 
+// A percentage over 100 can never be exceeded: most likely a fraction written as a percentage.
+void check_percent(double value, const char* name) {
+  check_limit(value, name);
+  if (value > 100) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    throw InputError(std::string(name) + ": " + text +
+                     " is more than 100 percent of the pixels, a limit no image can exceed (a percentage: "
+                     "0.5 for half a percent)");
+  }
+}
+
 DiffMode parse_mode(const std::string& mode) {
   if (mode == "abs") return DiffMode::abs;
   if (mode == "scaled") return DiffMode::scaled;
@@ -45,13 +57,13 @@ bool report(const char* level, const char* what, double value, const char* optio
 int run_compare(const Options& o) {
   for (auto [v, name] : {std::pair{o.max_rmse, "--max-rmse"},
                          {o.max_pixel, "--max-pixel"},
-                         {o.fail_percent, "--fail-percent"},
                          {o.warn_rmse, "--warn-rmse"},
                          {o.warn_pixel, "--warn-pixel"},
-                         {o.warn_percent, "--warn-percent"},
                          {o.threshold, "--threshold"},
                          {o.warn_threshold, "--warn-threshold"}})
     check_limit(v, name);
+  check_percent(o.fail_percent, "--fail-percent");
+  check_percent(o.warn_percent, "--warn-percent");
   const DiffMode mode = parse_mode(o.diff_mode);
   if (!o.diff.empty() && !is_writable_image_path(o.diff))
     throw InputError("--diff: " + o.diff + ": write the difference image as .png or .exr");

@@ -56,6 +56,14 @@ TEST(CompareCli, FailPercentAllowsAShareOfPixelsOverTheThreshold) {
   EXPECT_NE(fail.out.find("FAIL: percent of pixels over the threshold 2 > --fail-percent 1.5"),
             std::string::npos)
       << fail.out;
+  EXPECT_EQ(run_cli(base + " --fail-percent 100").status, 0);
+  for (const char* option : {"--fail-percent", "--warn-percent"}) {
+    const auto over = run_cli(base + " " + option + " 200");
+    EXPECT_EQ(over.status, 2) << option;
+    EXPECT_NE(over.err.find(std::string(option) + ": 200 is more than 100 percent of the pixels"),
+              std::string::npos)
+        << over.err;
+  }
 }
 
 TEST(CompareCli, WarnLimitsExitThreeAndFailLimitsWin) {
