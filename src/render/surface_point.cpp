@@ -85,6 +85,10 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
     s.u = uv[0][0] * w + uv[1][0] * hit.u + uv[2][0] * hit.v;
     s.v = uv[0][1] * w + uv[1][1] * hit.u + uv[2][1] * hit.v;
   }
+  if (const auto corners = scene.colors(t)) {
+    const auto& c = *corners;
+    s.color = c[0] * (1.0f - hit.u - hit.v) + c[1] * hit.u + c[2] * hit.v;
+  }
   s.material = scene.triangle_material[t];
   return s;
 }
@@ -92,7 +96,7 @@ SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
 Vec3f diffuse_albedo(const Scene& scene, const SurfacePoint& s) {
   const Material& m = scene.materials[s.material];
   const int32_t tex = scene.material_texture[s.material];
-  if (tex < 0) return m.Kd;
+  if (tex < 0) return m.Kd * s.color;
   const Texture& img = scene.textures[tex];
   const int width = img.width(), height = img.height();
   // OBJ texture space has v up; image row 0 is the top.
@@ -107,7 +111,7 @@ Vec3f diffuse_albedo(const Scene& scene, const SurfacePoint& s) {
   };
   const Vec3f top = texel(x0, y0) * (1 - ax) + texel(x0 + 1, y0) * ax;
   const Vec3f bottom = texel(x0, y0 + 1) * (1 - ax) + texel(x0 + 1, y0 + 1) * ax;
-  return m.Kd * (top * (1 - ay) + bottom * ay);
+  return m.Kd * (top * (1 - ay) + bottom * ay) * s.color;
 }
 
 }  // namespace rayvec

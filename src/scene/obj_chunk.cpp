@@ -188,15 +188,39 @@ class ChunkParser {
       in.skip_blanks();  // tinyobjloader reads a second coordinate, 0 when there is none
       if (!in.at_line_end() && !in.number(x[1])) return false;
       c_.texcoords.push_back({x[0], x[1]});
+    } else if (kind == kVn) {
+      c_.normals.push_back({x[0], x[1], x[2]});
     } else {
       // A position beyond the intersectors' range is an error: the full reader reports it with its line.
-      if (kind == kV &&
-          !(coordinate_in_range(x[0]) && coordinate_in_range(x[1]) && coordinate_in_range(x[2])))
+      if (!(coordinate_in_range(x[0]) && coordinate_in_range(x[1]) && coordinate_in_range(x[2])))
         return false;
-      (kind == kV ? c_.positions : c_.normals).push_back({x[0], x[1], x[2]});
+      c_.positions.push_back({x[0], x[1], x[2]});
+      if (!vertex_color(in)) return false;
     }
     // the tokens after the coordinates (`v x y z w`, colors) are not read, but obj_scan checks them
     return exponents_accepted(in) && in.next_line();
+  }
+
+  // The tokens after a position as tinyobjloader reads them: three numbers are a colour (`v x y z r
+  // g b`); fewer, or `v x y z w`, none (white). A token that cannot start a number (a comment) ends
+  // the numbers; one that starts like a number but is not a plain one is left to the reference path,
+  // whose number parser may read it otherwise.
+  bool vertex_color(Cursor& in) {
+    std::array<float, 3> rgb{1, 1, 1};
+    int read = 0;
+    for (; read < 3; ++read) {
+      in.skip_blanks();
+      const char c = in.peek();
+      if (in.at_line_end() || !(is_digit(c) || c == '+' || c == '-' || c == '.')) break;
+      if (!in.number(rgb[read])) return false;
+    }
+    if (read == 3) {
+      if (c_.colors.empty()) c_.colors.assign(c_.positions.size() - 1, Vec3f{1, 1, 1});
+      c_.colors.push_back({rgb[0], rgb[1], rgb[2]});
+    } else if (!c_.colors.empty()) {
+      c_.colors.push_back({1, 1, 1});
+    }
+    return true;
   }
 
   bool face_line(Cursor& in) {

@@ -1,7 +1,7 @@
 // parse_obj_chunk: rayvec's fast OBJ tokenizer for one piece of a file (a run of whole lines), the
 // first stage of load_obj_fast (obj_fast.h). It accepts only a strict subset of OBJ whose meaning is
-// certain to match tinyobjloader's — v/vn/vt with plain decimal numbers, faces of 3 to
-// kMaxFaceCorners corners with `a`, `a/b`, `a//c` or `a/b/c` corners, `l`/`p` lines of such corners
+// certain to match tinyobjloader's — v (with or without a colour)/vn/vt with plain decimal numbers, faces of
+// 3 to kMaxFaceCorners corners with `a`, `a/b`, `a//c` or `a/b/c` corners, `l`/`p` lines of such corners
 // (read and left out), usemtl/mtllib/g/o/t lines, `s` with a group number or `off`, comments — and
 // reports anything else (an error, `vw` lines, lone CR line ends) as "not mine", so that the caller
 // hands the whole file to the reference path instead.
@@ -32,6 +32,9 @@ struct ObjEvent {
 // an earlier chunk) and its slot is listed in `relative`; the caller adds the chunk's offset.
 struct ObjChunk {
   std::vector<Vec3f> positions, normals;
+  // per position: its colour (`v x y z r g b`), white where the line gives none; empty while no
+  // position of the chunk has one
+  std::vector<Vec3f> colors;
   std::vector<std::array<float, 2>> texcoords;
   std::vector<std::array<uint32_t, 3>> triangles;
   // -1: none. Each is empty while no triangle of the chunk gives that kind, then one per triangle.

@@ -310,6 +310,9 @@ bool load_obj_pieces(std::string_view text, const ObjSample& sample,
   ObjModel out;
   out.triangle_material = replay_materials(chunks, at, at.back().triangles, load_mtl, warn, err);
   out.triangle_smoothing = replay_smoothing(chunks, at, at.back().triangles);
+  if (std::any_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return !c.colors.empty(); }))
+    for (ObjChunk& c : chunks)
+      if (c.colors.empty()) c.colors.assign(c.positions.size(), Vec3f{1, 1, 1});
   fill_corner_indices(chunks, &ObjChunk::triangle_normals);
   fill_corner_indices(chunks, &ObjChunk::triangle_texcoords);
   std::vector<uint32_t> quads;
@@ -326,6 +329,7 @@ bool load_obj_pieces(std::string_view text, const ObjSample& sample,
     for (ObjChunk::Polygon p : c.polygons)
       polygons.push_back({p.first + static_cast<uint32_t>(at[i].triangles), p.corners});
     append(out.mesh.positions, c.positions);
+    append(out.colors, c.colors);
     append(out.normals, c.normals);
     append(out.texcoords, c.texcoords);
     append(out.mesh.triangles, c.triangles);

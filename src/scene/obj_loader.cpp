@@ -180,6 +180,12 @@ void convert_geometry(const tinyobj::attrib_t& attrib, const std::vector<tinyobj
   const auto nt = static_cast<int>(attrib.texcoords.size() / 2);
   model.mesh.positions.reserve(static_cast<std::size_t>(nv));
   for (int i = 0; i < nv; ++i) model.mesh.positions.push_back(vec3(&attrib.vertices[3 * i]));
+  // tinyobjloader gives every position a colour, white where its line has none
+  if (attrib.colors.size() == attrib.vertices.size() &&
+      std::any_of(attrib.colors.begin(), attrib.colors.end(), [](tinyobj::real_t c) { return c != 1; })) {
+    model.colors.reserve(static_cast<std::size_t>(nv));
+    for (int i = 0; i < nv; ++i) model.colors.push_back(vec3(&attrib.colors[3 * i]));
+  }
   for (int i = 0; i < nn; ++i) model.normals.push_back(vec3(&attrib.normals[3 * i]));
   for (int i = 0; i < nt; ++i)
     model.texcoords.push_back({attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]});

@@ -25,6 +25,9 @@ struct ObjModel {
   // one entry per triangle.
   std::vector<Vec3f> normals;
   std::vector<std::array<int32_t, 3>> triangle_normals;
+  // per position: its colour (`v x y z r g b`, as written), white where the line gives none; empty
+  // when no position has one
+  std::vector<Vec3f> colors;
   std::vector<std::array<float, 2>> texcoords;
   std::vector<std::array<int32_t, 3>> triangle_texcoords;
   // per triangle: the smoothing group of its face (`s N`; 0 = `s off` or none), empty when no face is

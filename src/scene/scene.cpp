@@ -175,12 +175,22 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
   }
   constexpr uint32_t kUnplaced = 0xffffffffu;
   std::vector<uint32_t> placed(model.mesh.positions.size(), kUnplaced);
+  const bool colored = !model.colors.empty() && model.colors.size() == model.mesh.positions.size();
+  const auto unit_interval = [](float x) { return x >= 0 ? std::min(x, 1.0f) : 0.0f; };  // NaN: 0
+  if (colored) {
+    vertex_colors.resize(mesh.positions.size(), Vec3f{1, 1, 1});  // the objects before: white
+    make_room(vertex_colors, mesh.positions.capacity());
+  }
   const auto vertex = [&](uint32_t i) {
     if (placed[i] == kUnplaced) {
       placed[i] = static_cast<uint32_t>(mesh.positions.size());
       // + 0 turns −0 into +0 as point()'s double arithmetic does
       const Vec3f p = model.mesh.positions[i];
       mesh.positions.push_back(map.is_identity() ? p + Vec3f{0, 0, 0} : map.point(p));
+      if (colored) {
+        const Vec3f c = model.colors[i];
+        vertex_colors.push_back({unit_interval(c.x), unit_interval(c.y), unit_interval(c.z)});
+      }
     }
     return placed[i];
   };

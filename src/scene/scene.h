@@ -75,6 +75,10 @@ struct Scene {
   std::vector<std::array<uint32_t, 3>> normal_corners, uv_corners;
   std::vector<Vec3f> normal_table;
   std::vector<std::array<float, 2>> uv_table;
+  // Per mesh vertex: its colour from the OBJ (`v x y z r g b`), clamped to [0, 1], which multiplies
+  // the diffuse albedo; white past its end (vertices of objects without colours added before the
+  // first with them, or after it), and empty while no object has any.
+  std::vector<Vec3f> vertex_colors;
   std::vector<std::string> warnings;
   // The camera and lights are rayvec's defaults (default_view.h), not the file's: a bare OBJ, or a
   // scene JSON without "camera" (default_camera) or without "lights" (default_light).
@@ -103,6 +107,15 @@ struct Scene {
     if (t >= uv_corners.size() || uv_corners[t][0] == kNoCorners) return std::nullopt;
     const auto& k = uv_corners[t];
     return std::array<std::array<float, 2>, 3>{uv_table[k[0]], uv_table[k[1]], uv_table[k[2]]};
+  }
+  // Triangle t's vertex colours (corners in the triangle's order), or none when the scene has none.
+  std::optional<std::array<Vec3f, 3>> colors(std::size_t t) const {
+    if (vertex_colors.empty()) return std::nullopt;
+    const auto color = [&](uint32_t v) {
+      return v < vertex_colors.size() ? vertex_colors[v] : Vec3f{1, 1, 1};
+    };
+    const auto& k = mesh.triangles[t];
+    return std::array<Vec3f, 3>{color(k[0]), color(k[1]), color(k[2])};
   }
   int32_t add_material(const Material& m);
 

@@ -50,7 +50,8 @@ Outcome load(const std::string& path, const rayvec::ObjLoadOptions& options) {
       if (m < -1 || (m >= 0 && std::size_t(m) >= model.materials.size())) __builtin_trap();
     // ... and every position, normal and texture coordinate is finite (obj_scan rejects nan/inf
     // text that tinyobjloader reads).
-    for (const auto* points : {&model.mesh.positions, &model.normals})
+    if (!model.colors.empty() && model.colors.size() != model.mesh.positions.size()) __builtin_trap();
+    for (const auto* points : {&model.mesh.positions, &model.normals, &model.colors})
       for (const rayvec::Vec3f& p : *points)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
     for (const auto& t : model.texcoords)
@@ -82,6 +83,13 @@ bool close(const Points& a, const Points& b, int dims) {
   return true;
 }
 
+// Every position's colour, white where the model has none (the reference path cannot tell a file
+// without colours from one whose colours are all white).
+std::vector<rayvec::Vec3f> colors_of(const rayvec::ObjModel& m) {
+  return m.colors.empty() ? std::vector<rayvec::Vec3f>(m.mesh.positions.size(), rayvec::Vec3f{1, 1, 1})
+                          : m.colors;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
@@ -101,7 +109,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       a.triangle_material != b.triangle_material || a.triangle_smoothing != b.triangle_smoothing ||
       a.warnings != b.warnings || a.materials.size() != b.materials.size() ||
       !close(a.mesh.positions, b.mesh.positions, 3) || !close(a.normals, b.normals, 3) ||
-      !close(a.texcoords, b.texcoords, 2))
+      !close(colors_of(a), colors_of(b), 3) || !close(a.texcoords, b.texcoords, 2))
     __builtin_trap();
   return 0;
 }

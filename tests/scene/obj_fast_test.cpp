@@ -56,6 +56,12 @@ void expect_close(const Points& a, const Points& b, int dims, const std::string&
           << what << " " << i << "[" << k << "]: " << a[i][k] << " vs " << b[i][k];
 }
 
+// Every position's colour, white where the model has none (the reference path cannot tell a file
+// without colours from one whose colours are all white).
+std::vector<Vec3f> colors_of(const ObjModel& m) {
+  return m.colors.empty() ? std::vector<Vec3f>(m.mesh.positions.size(), Vec3f{1, 1, 1}) : m.colors;
+}
+
 // Loads `path` through tinyobjloader and through the fast reader in 1..4 pieces; all must agree.
 // Returns whether the fast reader took the file.
 bool expect_same_as_reference(const std::string& path) {
@@ -76,6 +82,7 @@ bool expect_same_as_reference(const std::string& path) {
     EXPECT_EQ(a.warnings, b.warnings) << what;
     expect_close(a.mesh.positions, b.mesh.positions, 3, what + " position");
     expect_close(a.normals, b.normals, 3, what + " normal");
+    expect_close(colors_of(a), colors_of(b), 3, what + " colour");
     expect_close(a.texcoords, b.texcoords, 2, what + " texcoord");
     EXPECT_EQ(a.materials.size(), b.materials.size()) << what;
     for (std::size_t i = 0; i < std::min(a.materials.size(), b.materials.size()); ++i) {
@@ -161,6 +168,11 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
   // lines and points: read and left out; their indices are not checked (tinyobjloader does not)
   EXPECT_TRUE(same_on("lines_and_points", quad + "vt 0 0\nvn 0 0 1\nl 1 2\nf 1 2 3\nl 1/1 2/1 -1/1\n"
                                                  "p 1 2 3 4\np -1//1\nl 1/1/1 99\nl\np \nf 2 3 4\n"));
+  // vertex colours: three numbers after the position; fewer, a w, or a comment: white
+  EXPECT_TRUE(same_on("colors",
+                      "v 0 0 0 1 0 0\nv 1 0 0 0 0.5 1\nv 0 1 0\nv 1 1 0 0.25\nv 0 0 1 0.5 0.5\n"
+                      "v 1 0 1 # c\nv 0 1 1 0.1 0.2 0.3 1\nv 2 2 2 -1 2 +0.5\nf 1 2 3\nf 4 5 6 7 8\n"));
+  EXPECT_TRUE(same_on("colors_late", quad + "f 1 2 3\nv 5 5 5 0 1 0\nf 1 2 9\n"));
   EXPECT_TRUE(same_on("smoothing", quad + "s 1\nf 1 2 3\nf 1 2 3 4 5\ns off\nf 1 2 3\ns 3\nf 2 3 4\n"));
   // handed to the reference, which must still give its own result or error
   const std::pair<const char*, std::string> handed[] = {
@@ -169,6 +181,8 @@ TEST(ObjFast, SameAsTinyobjloaderOnEdgeCases) {
       {"line_with_comment", quad + "l 1 2 # edge\nf 1 2 3\n"},
       {"line_zero_index", quad + "l 1 0\nf 1 2 3\n"},
       {"point_word", quad + "p 1 x\nf 1 2 3\n"},
+      {"color_not_plain", quad + "v 0 0 0 1.5x 0 0\nf 1 2 3\n"},
+      {"color_long_exponent", quad + "v 0 0 0 1 0 0e0000001000000041\nf 1 2 3\n"},
       {"point_of_blanks", quad + "p \t\nf 1 2 3\n"},
       {"smoothing_atoi", quad + "s 1.5\nf 1 2 3\ns -2\nf 1 2 3\ns on\nf 1 2 3\n"},
       {"bad_index", quad + "f 1 2 9\n"},

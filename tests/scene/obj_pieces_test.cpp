@@ -61,6 +61,7 @@ void expect_identical(const Result& a, const Result& b, const std::string& what)
   EXPECT_EQ(x.mesh.positions, y.mesh.positions) << what;  // exact: the same parse of the same text
   EXPECT_EQ(x.mesh.triangles, y.mesh.triangles) << what;
   EXPECT_EQ(x.normals, y.normals) << what;
+  EXPECT_EQ(x.colors, y.colors) << what;
   EXPECT_EQ(x.texcoords, y.texcoords) << what;
   EXPECT_EQ(x.triangle_normals, y.triangle_normals) << what;
   EXPECT_EQ(x.triangle_texcoords, y.triangle_texcoords) << what;
@@ -128,6 +129,9 @@ TEST(ObjPieces, CutsChangeNothingOnEdgeCases) {
                                          "mtllibs"));
   EXPECT_TRUE(expect_cuts_change_nothing(
       kQuad + "g\ng \no\no x\ns off\ns 1\nt x 1/0/0 5\ng a b\nf 1 2 3\ng\n", "groups"));
+  EXPECT_TRUE(expect_cuts_change_nothing(
+      kQuad + "f 1 2 3\nv 0 0 0 1 0 0\nv 1 1 1\nf 1 2 3 4\nv 2 2 2 0 0 1\nf 9 10 11\n",
+      "colours from a later position on"));
   EXPECT_TRUE(expect_cuts_change_nothing(kQuad +
                                              "s 1\nf 1 2 3\nf 1 2 3 4\ng x\nf 5 6 7\ns\nf 1 2 3\ns off\n"
                                              "f 1 2 3 4 5\ns 12\nf 1 2 3\ns 0\nf 1 2 3\ns\t7 8\nf 4 3 2\n",
