@@ -3,7 +3,8 @@
 // did in the program that made it. The normal at a corner is the mean of the unit normals of the
 // group's triangles around that vertex, each weighted by its angle there (Thürmer & Wüthrich 1998):
 // unlike a mean weighted by area or by count, it does not change when a face is cut into more
-// triangles. Vertices are shared by index, as OBJ writes them; groups meet at a crease.
+// triangles (see benchmarks.md#decision-smooth-normals). Vertices are shared by index, as OBJ writes
+// them; groups meet at a crease.
 #pragma once
 #include <array>
 #include <cstdint>
