@@ -36,14 +36,21 @@ std::string material_name(std::string_view key) {
   return name;
 }
 
-std::string mtllib_separators(std::string_view rest) {
+std::string mtllib_text(std::string_view rest, const MtlFileExists& exists) {
   std::string out(rest);
   for (std::size_t i = 0; i < out.size(); ++i)
     if (out[i] == '\\' && (i + 1 == out.size() || out[i + 1] != ' ')) out[i] = '/';
-  return out;
+  const std::size_t first = out.find_first_not_of(' '), last = out.find_last_not_of(' ');
+  if (first == std::string::npos || out.find('\\') != std::string::npos) return out;
+  const std::string whole = out.substr(first, last - first + 1);
+  if (whole.find(' ') == std::string::npos || !exists(whole)) return out;
+  std::string escaped;
+  for (const char c : whole) escaped.append(c == ' ' ? "\\ " : std::string(1, c));
+  return escaped;
 }
 
-std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine>& usemtl_lines) {
+std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine>& usemtl_lines,
+                                   const MtlFileExists& exists) {
   std::string out;
   out.reserve(text.size());
   std::size_t line_no = 0;
@@ -56,7 +63,7 @@ std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine
     if (line.compare(indent, 6, "mtllib") == 0 && line.size() > indent + 6 &&
         (line[indent + 6] == ' ' || line[indent + 6] == '\t')) {
       // tinyobjloader's test for the keyword, and the rest after its one blank
-      out.append(line.substr(0, indent + 7)).append(mtllib_separators(line.substr(indent + 7))).append(end);
+      out.append(line.substr(0, indent + 7)).append(mtllib_text(line.substr(indent + 7), exists)).append(end);
       continue;
     }
     if (line.compare(indent, 6, "usemtl") != 0) {

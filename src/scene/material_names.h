@@ -1,9 +1,11 @@
 // How an OBJ `usemtl` line names its material, the same on both OBJ readers: the whole rest of the
 // line, so `usemtl Material #25` and `usemtl Material #26` are two materials. tinyobjloader reads
 // only the first word (both were "Material", the first such material); its reading is kept apart
-// from names with blanks by keys without them. And how `mtllib` names its files (Windows paths).
+// from names with blanks by keys without them. And how `mtllib` names its files (Windows paths,
+// names with spaces).
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,15 +29,22 @@ struct UsemtlLine {
   std::string key;
 };
 
-// The text after `mtllib ` with every `\` that does not escape a space written as `/`: a path
-// written on Windows (`mtllib ..\mats\a.mtl`), which tinyobjloader's reading would make
-// `..matsa.mtl` (a `\` escapes the next character there); `a\ b.mtl` stays one name with a space.
-std::string mtllib_separators(std::string_view rest);
+// Whether the name an `mtllib` line gives (separators already `/`) is an existing MTL file.
+using MtlFileExists = std::function<bool(const std::string& name)>;
+
+// The text after `mtllib ` as both OBJ readers hand it to tinyobjloader's reading, which splits it
+// at spaces into names and reads `\` as an escape of the next character: every `\` that does not
+// escape a space written as `/` (a path written on Windows, `mtllib ..\mats\a.mtl`, would read
+// `..matsa.mtl`; `a\ b.mtl` stays one name with a space); then, where the whole text (without its
+// outer blanks and without escapes) names an existing file, its spaces escaped, so that it is one
+// name — `mtllib Low Poly Tree.mtl`, as some exporters write a name with spaces.
+std::string mtllib_text(std::string_view rest, const MtlFileExists& exists);
 
 // `text` (an OBJ file) as tinyobjloader is to read it: the name of every `usemtl` line written as
-// its material_key, and every `mtllib` line's rest through mtllib_separators; lines, line ends and
+// its material_key, and every `mtllib` line's rest through mtllib_text; lines, line ends and
 // everything else unchanged. `usemtl_lines` receives the file's `usemtl` lines in order.
-std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine>& usemtl_lines);
+std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine>& usemtl_lines,
+                                   const MtlFileExists& exists);
 
 // The warning for a `usemtl` line whose material no MTL file loaded before it defines, as both OBJ
 // readers write it before load_obj words it for the user: tinyobjloader's words,

@@ -95,7 +95,7 @@ void parse_in_parallel(std::string_view text, const ObjSample& sample,
     if (f) std::rethrow_exception(f);
 }
 
-// tinyobjloader's reading of the text after `mtllib ` (after mtllib_separators, as the reference
+// tinyobjloader's reading of the text after `mtllib ` (after mtllib_text, as the reference
 // path hands it over): names split at spaces, `\` escapes the next character, and the last
 // (possibly empty) name always counts.
 std::vector<std::string> mtllib_names(const std::string& text) {
@@ -128,8 +128,8 @@ struct Offsets {
 // Replays mtllib and usemtl in file order as tinyobjloader does; returns the material of every
 // triangle.
 std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const std::vector<Offsets>& at,
-                                      std::size_t triangles, const MtlLibraryLoader& load_mtl,
-                                      std::string& warn, std::string& err) {
+                                      std::size_t triangles, const MtlLibraries& mtl, std::string& warn,
+                                      std::string& err) {
   std::vector<int32_t> material(triangles, -1);
   std::map<std::string, int> by_name;
   std::set<std::string> loaded;
@@ -148,13 +148,13 @@ std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const
         current = it == by_name.end() ? -1 : it->second;
       } else if (e.kind == ObjEvent::mtllib) {
         bool found = false;
-        for (const std::string& name : mtllib_names(mtllib_separators(e.text))) {
+        for (const std::string& name : mtllib_names(mtllib_text(e.text, mtl.exists))) {
           if (loaded.count(name) > 0) {
             found = true;
             continue;
           }
           std::string mtl_warn, mtl_err;
-          const bool ok = load_mtl(name, by_name, mtl_warn, mtl_err);
+          const bool ok = mtl.load(name, by_name, mtl_warn, mtl_err);
           warn += mtl_warn;
           err += mtl_err;
           if (ok) {
@@ -276,15 +276,15 @@ void append(std::vector<T>& to, std::vector<T>& from) {
 
 }  // namespace
 
-bool load_obj_fast(std::string_view text, int threads, const MtlLibraryLoader& load_mtl, ObjModel& model,
+bool load_obj_fast(std::string_view text, int threads, const MtlLibraries& mtl, ObjModel& model,
                    std::string& warn, std::string& err) {
   const ObjSample sample(text);
-  return load_obj_pieces(text, sample, sample.split(std::max(threads, 1)), load_mtl, model, warn, err);
+  return load_obj_pieces(text, sample, sample.split(std::max(threads, 1)), mtl, model, warn, err);
 }
 
 bool load_obj_pieces(std::string_view text, const ObjSample& sample,
-                     const std::vector<std::string_view>& pieces, const MtlLibraryLoader& load_mtl,
-                     ObjModel& model, std::string& warn, std::string& err) {
+                     const std::vector<std::string_view>& pieces, const MtlLibraries& mtl, ObjModel& model,
+                     std::string& warn, std::string& err) {
   std::vector<ObjChunk> chunks(pieces.size());
   parse_in_parallel(text, sample, pieces, chunks);
 
@@ -308,7 +308,7 @@ bool load_obj_pieces(std::string_view text, const ObjSample& sample,
 
   // From here on the text is ours: no more fallbacks, so the MTL files load exactly once.
   ObjModel out;
-  out.triangle_material = replay_materials(chunks, at, at.back().triangles, load_mtl, warn, err);
+  out.triangle_material = replay_materials(chunks, at, at.back().triangles, mtl, warn, err);
   out.triangle_smoothing = replay_smoothing(chunks, at, at.back().triangles);
   if (std::any_of(chunks.begin(), chunks.end(), [](const ObjChunk& c) { return !c.colors.empty(); }))
     for (ObjChunk& c : chunks)

@@ -38,29 +38,14 @@ class MtlReader : public tinyobj::MaterialReader {
   MtlReader(fs::path obj_dir, std::vector<std::string>& warnings)
       : obj_dir_(std::move(obj_dir)), warnings_(warnings) {}
 
-  // A name with spaces (`mtllib Low Poly Tree.mtl`, as some exporters write it) arrives in pieces,
-  // one call each: both readers split the line at spaces and call until a piece loads. A piece
-  // that names no file joins the run of such pieces; the next piece is tried joined to the run
-  // first, and a joined name that exists loads and takes back the run's "not found" warnings.
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* by_name, std::string* warn, std::string*) override {
     std::error_code ec;
-    if (!run_.empty()) {
-      const fs::path joined = resolve_named_file(run_ + " " + name, obj_dir_.string());
-      if (fs::is_regular_file(joined, ec)) {
-        taken_back.insert(taken_back.end(), run_warnings_.begin(), run_warnings_.end());
-        end_run();
-        return load(joined, materials, by_name);
-      }
-    }
     const fs::path mtl = resolve_named_file(name, obj_dir_.string());
     if (!fs::exists(mtl, ec)) {
-      run_warnings_.push_back("material file " + mtl.string() + " not found; using default materials");
-      *warn += run_warnings_.back() + "\n";
-      run_ += (run_.empty() ? "" : " ") + name;
+      *warn += "material file " + mtl.string() + " not found; using default materials\n";
       return false;
     }
-    end_run();
     // Only regular files: a stranger's `mtllib /dev/zero` (or a FIFO) would read forever.
     if (!fs::is_regular_file(mtl, ec)) {
       *warn += "material file " + mtl.string() + " is not a regular file; using default materials\n";
@@ -69,8 +54,13 @@ class MtlReader : public tinyobj::MaterialReader {
     return load(mtl, materials, by_name);
   }
 
-  std::vector<Material> read;           // parallel to tinyobjloader's materials
-  std::vector<std::string> taken_back;  // warnings given for pieces of a name that then loaded
+  // Whether `name` (a whole `mtllib` line's) is a file, for mtllib_text.
+  bool exists(const std::string& name) const {
+    std::error_code ec;
+    return fs::is_regular_file(resolve_named_file(name, obj_dir_.string()), ec);
+  }
+
+  std::vector<Material> read;  // parallel to tinyobjloader's materials
 
  private:
   bool load(const fs::path& mtl, std::vector<tinyobj::material_t>* materials,
@@ -86,15 +76,8 @@ class MtlReader : public tinyobj::MaterialReader {
     return true;
   }
 
-  void end_run() {
-    run_.clear();
-    run_warnings_.clear();
-  }
-
   fs::path obj_dir_;
   std::vector<std::string>& warnings_;
-  std::string run_;  // the pieces since the last that named a file, joined by spaces
-  std::vector<std::string> run_warnings_;
 };
 
 Vec3f vec3(const tinyobj::real_t* v) { return {v[0], v[1], v[2]}; }
@@ -121,13 +104,11 @@ std::string with_usemtl_lines(const std::string& warn, const std::vector<UsemtlL
 }
 
 // The readers' warning text (tinyobjloader's, or the fast reader's written alike) into
-// `warnings` as the user reads them, less one occurrence of each line in `taken_back`. A
-// `usemtl` whose material is missing reads `path:line: usemtl 'name': ...`, once per name, with
-// the count of the later lines naming it (a file whose thousand `usemtl` lines name a missing
-// material warns once); any other warning given more than once, once with its count. A `g` line
+// `warnings` as the user reads them. A `usemtl` whose material is missing reads `path:line: usemtl 'name':
+// ...`, once per name, with the count of the later lines naming it (a file whose thousand `usemtl` lines name
+// a missing material warns once); any other warning given more than once, once with its count. A `g` line
 // without a name changes nothing rayvec reads: not a warning.
-void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings,
-                    std::vector<std::string> taken_back = {}) {
+void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings) {
   std::istringstream lines(text);
   struct Distinct {
     std::string text;
@@ -141,10 +122,6 @@ void split_warnings(const std::string& text, const std::string& path, std::vecto
     if (line.empty() || line == "." || line.rfind("Failed to load material file", 0) == 0 ||
         line.rfind("Empty group name.", 0) == 0)
       continue;
-    if (const auto back = std::find(taken_back.begin(), taken_back.end(), line); back != taken_back.end()) {
-      taken_back.erase(back);
-      continue;
-    }
     std::string key, id = line;
     std::size_t line_no = 0;
     const bool usemtl = parse_unknown_material(line, key, line_no);
@@ -270,15 +247,15 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
   std::string warn, err;
   ObjModel model;
   MtlReader mtl_reader(fs::path(path).parent_path(), model.warnings);
-  const MtlLibraryLoader load_mtl = [&](const std::string& file, std::map<std::string, int>& by_name,
-                                        std::string& mtl_warn, std::string& mtl_err) {
-    return mtl_reader(file, &materials, &by_name, &mtl_warn, &mtl_err);
-  };
+  const MtlLibraries mtl{
+      [&](const std::string& name) { return mtl_reader.exists(name); },
+      [&](const std::string& file, std::map<std::string, int>& by_name, std::string& mtl_warn,
+          std::string& mtl_err) { return mtl_reader(file, &materials, &by_name, &mtl_warn, &mtl_err); }};
   const int threads = options.threads > 0                                                   ? options.threads
                       : options.available_threads >= 2 && text.size() >= kObjTwoThreadsFrom ? 2
                                                                                             : 1;
   clock.threads = threads;
-  clock.fast = !options.reference && load_obj_fast(text, threads, load_mtl, model, warn, err);
+  clock.fast = !options.reference && load_obj_fast(text, threads, mtl, model, warn, err);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<LargeFace> large_faces;
@@ -287,7 +264,8 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
     const double before_check = seconds_since(t0);
     large_faces = check_obj_text(text, path);
     clock.check = seconds_since(t0) - before_check;
-    std::istringstream in{text_for_tinyobjloader(text, usemtl_lines)};
+    std::istringstream in{text_for_tinyobjloader(
+        text, usemtl_lines, [&](const std::string& name) { return mtl_reader.exists(name); })};
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, false))
       throw InputError(path, 0, "cannot parse: " + err);
     warn = with_usemtl_lines(warn, usemtl_lines);
@@ -295,7 +273,7 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
   clock.parse = seconds_since(t0) - clock.check;
 
   t0 = std::chrono::steady_clock::now();
-  split_warnings(warn, path, model.warnings, mtl_reader.taken_back);
+  split_warnings(warn, path, model.warnings);
   if (!err.empty()) split_warnings(err, path, model.warnings);  // e.g. MTL problems on success
   model.materials = std::move(mtl_reader.read);
   if (!clock.fast) convert_geometry(attrib, shapes, large_faces, materials.size(), path, model);

@@ -10,6 +10,8 @@
 namespace rayvec {
 namespace {
 
+bool no_file(const std::string&) { return false; }  // no MTL file exists
+
 TEST(MaterialNames, UsemtlNamesTheRestOfItsLine) {
   EXPECT_EQ(written_material_name(" Material #25"), "Material #25");
   EXPECT_EQ(written_material_name("\t Hard Shiny  Plastic \t\r"), "Hard Shiny  Plastic");
@@ -33,7 +35,7 @@ TEST(MaterialNames, OnlyUsemtlLinesAreRewrittenAndLineEndsStay) {
   const std::string want = std::string("v 0 0 0\r\nusemtl Material\x1f#25\r\n  usemtl A\x1f") +
                            "B\nusemtl C\x1f" + "D\rg a b\nf 1 2 3\n# usemtl x y\nusemtl ";
   std::vector<UsemtlLine> lines;
-  EXPECT_EQ(text_for_tinyobjloader(text, lines), want);
+  EXPECT_EQ(text_for_tinyobjloader(text, lines, no_file), want);
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_EQ(lines[0].line, 2u);
   EXPECT_EQ(lines[0].key, "Material\x1f#25");
@@ -45,21 +47,40 @@ TEST(MaterialNames, OnlyUsemtlLinesAreRewrittenAndLineEndsStay) {
   EXPECT_EQ(lines[3].line, 8u);
   EXPECT_EQ(lines[3].key, "");
   lines.clear();
-  EXPECT_EQ(text_for_tinyobjloader("f 1 2 3\n", lines), "f 1 2 3\n");
-  EXPECT_EQ(text_for_tinyobjloader("", lines), "");
+  EXPECT_EQ(text_for_tinyobjloader("f 1 2 3\n", lines, no_file), "f 1 2 3\n");
+  EXPECT_EQ(text_for_tinyobjloader("", lines, no_file), "");
   EXPECT_TRUE(lines.empty());
 }
 
 TEST(MaterialNames, MtllibBackslashesAreSeparatorsUnlessTheyEscapeASpace) {
-  EXPECT_EQ(mtllib_separators("..\\mats\\a.mtl"), "../mats/a.mtl");
-  EXPECT_EQ(mtllib_separators("C:\\Users\\me\\m.mtl b.mtl"), "C:/Users/me/m.mtl b.mtl");
-  EXPECT_EQ(mtllib_separators("a\\ b.mtl"), "a\\ b.mtl");
-  EXPECT_EQ(mtllib_separators("end\\"), "end/");
+  EXPECT_EQ(mtllib_text("..\\mats\\a.mtl", no_file), "../mats/a.mtl");
+  EXPECT_EQ(mtllib_text("C:\\Users\\me\\m.mtl b.mtl", no_file), "C:/Users/me/m.mtl b.mtl");
+  EXPECT_EQ(mtllib_text("a\\ b.mtl", no_file), "a\\ b.mtl");
+  EXPECT_EQ(mtllib_text("end\\", no_file), "end/");
   std::vector<UsemtlLine> lines;
   EXPECT_EQ(text_for_tinyobjloader(
-                "mtllib ..\\m\\a.mtl\r\n\tmtllib\ta\\ b\\c.mtl\nmtllibx\\y\n# mtllib a\\b\n", lines),
+                "mtllib ..\\m\\a.mtl\r\n\tmtllib\ta\\ b\\c.mtl\nmtllibx\\y\n# mtllib a\\b\n", lines, no_file),
             "mtllib ../m/a.mtl\r\n\tmtllib\ta\\ b/c.mtl\nmtllibx\\y\n# mtllib a\\b\n");
   EXPECT_TRUE(lines.empty());
+}
+
+TEST(MaterialNames, AnMtllibLineThatNamesOneFileWithSpacesStaysOneName) {
+  std::vector<std::string> asked;
+  const MtlFileExists exists = [&](const std::string& name) {
+    asked.push_back(name);
+    return name == "Low Poly Tree.mtl" || name == "dir/my m.mtl";
+  };
+  EXPECT_EQ(mtllib_text("Low Poly Tree.mtl", exists), "Low\\ Poly\\ Tree.mtl");
+  EXPECT_EQ(mtllib_text("  Low Poly Tree.mtl ", exists), "Low\\ Poly\\ Tree.mtl") << "outer blanks dropped";
+  EXPECT_EQ(mtllib_text("dir\\my m.mtl", exists), "dir/my\\ m.mtl") << "separators first";
+  EXPECT_EQ(mtllib_text("a.mtl Low Poly Tree.mtl", exists), "a.mtl Low Poly Tree.mtl") << "names as written";
+  asked.clear();
+  EXPECT_EQ(mtllib_text("Low\\ Poly Tree.mtl", exists), "Low\\ Poly Tree.mtl") << "escapes: as written";
+  EXPECT_EQ(mtllib_text("Tree.mtl", exists), "Tree.mtl");
+  EXPECT_TRUE(asked.empty()) << "one name, or escapes written: nothing to ask";
+  std::vector<UsemtlLine> lines;
+  EXPECT_EQ(text_for_tinyobjloader("mtllib Low Poly Tree.mtl\r\nusemtl a\n", lines, exists),
+            "mtllib Low\\ Poly\\ Tree.mtl\r\nusemtl a\n");
 }
 
 TEST(MaterialNames, UnknownMaterialWarningsReadBack) {

@@ -178,8 +178,9 @@ TEST(ObjLoader, MtlLibrariesNamedOnAnotherSystemAreFound) {
 }
 
 TEST(ObjLoader, MtlLibraryNamesWithSpacesAreFound) {
-  // `mtllib Low Poly Tree.mtl`: tinyobjloader splits the line at spaces; the pieces that name no
-  // file are joined to the next. Both readers; a missing name before a found one still warns.
+  // `mtllib Low Poly Tree.mtl`: tinyobjloader splits the line at spaces, unless the whole line,
+  // naming a file, reaches it with its spaces escaped. Both readers; a missing name before a found
+  // one still warns.
   const std::string dir = test::temp_dir("obj_mtllib_spaces");
   test::write_file(dir + "/Low Poly Tree.mtl", "newmtl bark\nKd 0.5 0.25 0\n");
   test::write_file(dir + "/leaf.mtl", "newmtl leaf\nKd 0 1 0\n");

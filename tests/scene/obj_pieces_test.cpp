@@ -26,18 +26,19 @@ struct Result {
   std::string warn, err, mtl_calls;  // mtl_calls: the libraries asked for, in order
 };
 
-// Knows one library, m.mtl, with materials a and b.
-MtlLibraryLoader fake_mtl(std::string& calls) {
-  return [&calls](const std::string& file, std::map<std::string, int>& by_name, std::string& warn,
-                  std::string&) {
-    calls += file + ";";
-    if (file != "m.mtl") {
-      warn += "no " + file + "\n";
-      return false;
-    }
-    for (const char* name : {"a", "b"}) by_name.emplace(name, static_cast<int>(by_name.size()));
-    return true;
-  };
+// Knows two libraries, m.mtl and "my m.mtl", each with materials a and b.
+MtlLibraries fake_mtl(std::string& calls) {
+  const auto known = [](const std::string& file) { return file == "m.mtl" || file == "my m.mtl"; };
+  return {known, [&calls, known](const std::string& file, std::map<std::string, int>& by_name,
+                                 std::string& warn, std::string&) {
+            calls += file + ";";
+            if (!known(file)) {
+              warn += "no " + file + "\n";
+              return false;
+            }
+            for (const char* name : {"a", "b"}) by_name.emplace(name, static_cast<int>(by_name.size()));
+            return true;
+          }};
 }
 
 Result load(std::string_view text, const std::vector<std::string_view>& pieces) {
@@ -127,6 +128,8 @@ TEST(ObjPieces, CutsChangeNothingOnEdgeCases) {
                                          "materials"));
   EXPECT_TRUE(expect_cuts_change_nothing(kQuad + "mtllib missing.mtl m.mtl\nmtllib m.mtl\nusemtlb\nf 1 2 3\n",
                                          "mtllibs"));
+  EXPECT_TRUE(expect_cuts_change_nothing(kQuad + "mtllib  my m.mtl \nusemtl a\nf 1 2 3\nmtllib my x.mtl\n",
+                                         "mtllib names with spaces"));
   EXPECT_TRUE(expect_cuts_change_nothing(
       kQuad + "g\ng \no\no x\ns off\ns 1\nt x 1/0/0 5\ng a b\nf 1 2 3\ng\n", "groups"));
   EXPECT_TRUE(expect_cuts_change_nothing(
