@@ -197,7 +197,7 @@ class ChunkParser {
       c_.positions.push_back({x[0], x[1], x[2]});
       if (!vertex_color(in)) return false;
     }
-    // the tokens after the coordinates (`v x y z w`, colors) are not read, but obj_scan checks them
+    // the tokens not read (a position's w, what follows a colour or a normal) obj_scan checks too
     return exponents_accepted(in) && in.next_line();
   }
 

@@ -104,10 +104,11 @@ std::string with_usemtl_lines(const std::string& warn, const std::vector<UsemtlL
 }
 
 // The readers' warning text (tinyobjloader's, or the fast reader's written alike) into
-// `warnings` as the user reads them. A `usemtl` whose material is missing reads `path:line: usemtl 'name':
-// ...`, once per name, with the count of the later lines naming it (a file whose thousand `usemtl` lines name
-// a missing material warns once); any other warning given more than once, once with its count. A `g` line
-// without a name changes nothing rayvec reads: not a warning.
+// `warnings` as the user reads them. A `usemtl` whose material is missing reads
+// `path:line: usemtl 'name': ...`, once per name, with the count of the later lines naming it (a
+// file whose thousand `usemtl` lines name a missing material warns once); any other warning given
+// more than once, once with its count. A `g` line without a name changes nothing rayvec reads: not
+// a warning.
 void split_warnings(const std::string& text, const std::string& path, std::vector<std::string>& warnings) {
   std::istringstream lines(text);
   struct Distinct {

@@ -76,8 +76,8 @@ struct Scene {
   std::vector<Vec3f> normal_table;
   std::vector<std::array<float, 2>> uv_table;
   // Per mesh vertex: its colour from the OBJ (`v x y z r g b`), clamped to [0, 1], which multiplies
-  // the diffuse albedo; white past its end (vertices of objects without colours added before the
-  // first with them, or after it), and empty while no object has any.
+  // the diffuse albedo; white for the vertices of objects without colours (past its end for those
+  // added after the last object with them), and empty while no object has any.
   std::vector<Vec3f> vertex_colors;
   std::vector<std::string> warnings;
   // The camera and lights are rayvec's defaults (default_view.h), not the file's: a bare OBJ, or a
