@@ -3,7 +3,8 @@
 // Thresholds (PNG values, sRGB-encoded in [0,1]): RMSE <= 0.01 and no pixel off by more than 0.25 —
 // loose enough for FMA/no-FMA rounding at silhouette pixels across ISAs, tight enough that a wrong
 // light, material or effect moves the RMSE far beyond it (see GoldenScenes.CompareCatchesAWrongImage).
-// References were made with: rayvec render scenes/<name>.json --width 96 --height 72 --spp 1.
+// References were made with: rayvec render scenes/<name>.json --width 96 --height 72 --spp 1 (the
+// bare OBJ scenes/models/painted_sphere.obj too: smoothing groups and vertex colours).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -18,10 +19,12 @@ namespace {
 
 using test::run_cli;
 
-const char* const kScenes[] = {"whitted", "cornell_box", "shadows", "reflection", "refraction"};
+const char* const kScenes[] = {"whitted",    "cornell_box", "shadows",
+                               "reflection", "refraction",  "painted_sphere"};
 
 std::string scene(const std::string& name) {
-  return std::string(RAYVEC_SOURCE_DIR) + "/scenes/" + name + ".json";
+  const std::string dir = std::string(RAYVEC_SOURCE_DIR) + "/scenes/";
+  return name == "painted_sphere" ? dir + "models/" + name + ".obj" : dir + name + ".json";
 }
 std::string reference(const std::string& name) {
   return std::string(RAYVEC_SOURCE_DIR) + "/tests/data/images/" + name + ".png";
