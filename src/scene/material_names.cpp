@@ -66,6 +66,11 @@ std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine
       out.append(line.substr(0, indent + 7)).append(mtllib_text(line.substr(indent + 7), exists)).append(end);
       continue;
     }
+    if (line.size() > indent + 1 && (line[indent] == 'l' || line[indent] == 'p') &&
+        (line[indent + 1] == ' ' || line[indent + 1] == '\t')) {
+      out.append(end);  // tinyobjloader's test for a line or point, which rayvec does not draw
+      continue;
+    }
     if (line.compare(indent, 6, "usemtl") != 0) {
       out.append(text.substr(start, pos - start));
       continue;

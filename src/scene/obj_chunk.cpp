@@ -136,43 +136,6 @@ bool exponents_accepted(Cursor& in) {
   return true;
 }
 
-// A corner of a face, line or point as tinyobjloader's parseTriple reads it — `v`, `v/vt`, `v//vn`
-// or `v/vt/vn` — with `read(kind)` reading each index; true if the whole token is one.
-template <typename Read>
-bool corner_form(Cursor& in, Read read) {
-  if (!read(kV)) return false;
-  if (in.peek() == '/') {
-    in.jump(in.pos() + 1);
-    if (in.peek() == '/') {
-      in.jump(in.pos() + 1);
-      if (!read(kVn)) return false;
-    } else {
-      if (!read(kVt)) return false;
-      if (in.peek() == '/') {
-        in.jump(in.pos() + 1);
-        if (!read(kVn)) return false;
-      }
-    }
-  }
-  return in.at_token_end();
-}
-
-// The rest of an `l` (line) or `p` (point) line: corners that tinyobjloader accepts, which rayvec
-// then leaves out (it draws triangles). Their indices are not checked against the file, as
-// tinyobjloader does not check them. Any other token — a comment after the corners among them,
-// which tinyobjloader reads as index 0 and refuses — is left to the reference path and its error,
-// as is a line of blanks after its keyword's own (tinyobjloader reads a corner there, index 0).
-bool primitive_line(Cursor& in) {
-  const char* keyword_end = in.pos();
-  in.skip_blanks();
-  if (in.at_line_end() && in.pos() - keyword_end > 1) return false;
-  for (; !in.at_line_end(); in.skip_blanks()) {
-    int32_t index = 0;
-    if (!corner_form(in, [&](int) { return in.index(index); })) return false;
-  }
-  return true;
-}
-
 class ChunkParser {
  public:
   explicit ChunkParser(ObjChunk& chunk) : c_(chunk) {}
@@ -265,8 +228,23 @@ class ChunkParser {
     return true;
   }
 
+  // v, v/vt, v//vn, v/vt/vn
   bool corner(Cursor& in, Corner& out) {
-    return corner_form(in, [&](int kind) { return item(in, out, kind); });
+    if (!item(in, out, kV)) return false;
+    if (in.peek() == '/') {
+      in.jump(in.pos() + 1);
+      if (in.peek() == '/') {
+        in.jump(in.pos() + 1);
+        if (!item(in, out, kVn)) return false;
+      } else {
+        if (!item(in, out, kVt)) return false;
+        if (in.peek() == '/') {
+          in.jump(in.pos() + 1);
+          if (!item(in, out, kVn)) return false;
+        }
+      }
+    }
+    return in.at_token_end();
   }
 
   void triangle(const Corner& a, const Corner& b, const Corner& c) {
@@ -345,7 +323,7 @@ void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
     } else if (key == "f") {
       ok = !in.at_line_end() && parser.face_line(in);
     } else if (key == "l" || key == "p") {
-      ok = primitive_line(in) && in.next_line();
+      ok = in.next_line();  // lines and points: not drawn, not read (text_for_tinyobjloader)
     } else if (key == "vw") {
       ok = false;  // skin weights: rare, and tinyobjloader may reject them
     } else if (key.substr(0, 6) == "usemtl") {

@@ -1,10 +1,10 @@
 // parse_obj_chunk: rayvec's fast OBJ tokenizer for one piece of a file (a run of whole lines), the
 // first stage of load_obj_fast (obj_fast.h). It accepts only a strict subset of OBJ whose meaning is
-// certain to match tinyobjloader's — v (with or without a colour)/vn/vt with plain decimal numbers, faces of
-// 3 to kMaxFaceCorners corners with `a`, `a/b`, `a//c` or `a/b/c` corners, `l`/`p` lines of such corners
-// (read and left out), usemtl/mtllib/g/o/t lines, `s` with a group number or `off`, comments — and
-// reports anything else (an error, `vw` lines, lone CR line ends) as "not mine", so that the caller
-// hands the whole file to the reference path instead.
+// certain to match tinyobjloader's — v (with or without a colour)/vn/vt with plain decimal numbers,
+// faces of 3 to kMaxFaceCorners corners with `a`, `a/b`, `a//c` or `a/b/c` corners, `l`/`p` lines
+// (not read), usemtl/mtllib/g/o/t lines, `s` with a group number or `off`, comments — and reports
+// anything else (an error, `vw` lines, lone CR line ends) as "not mine", so that the caller hands the
+// whole file to the reference path instead.
 #pragma once
 #include <array>
 #include <cstddef>

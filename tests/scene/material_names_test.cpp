@@ -64,6 +64,13 @@ TEST(MaterialNames, MtllibBackslashesAreSeparatorsUnlessTheyEscapeASpace) {
   EXPECT_TRUE(lines.empty());
 }
 
+TEST(MaterialNames, LinesAndPointsReachTinyobjloaderEmpty) {
+  std::vector<UsemtlLine> lines;
+  EXPECT_EQ(text_for_tinyobjloader("l 1 2 # edge\r\n\tp 1 0\nf 1 2 3\nl\np\nlx 1\npoly 2\n", lines, no_file),
+            "\r\n\nf 1 2 3\nl\np\nlx 1\npoly 2\n")
+      << "only what tinyobjloader reads as a line or point: the keyword and a blank";
+}
+
 TEST(MaterialNames, AnMtllibLineThatNamesOneFileWithSpacesStaysOneName) {
   std::vector<std::string> asked;
   const MtlFileExists exists = [&](const std::string& name) {

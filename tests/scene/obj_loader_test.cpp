@@ -177,6 +177,15 @@ TEST(ObjLoader, MtlLibrariesNamedOnAnotherSystemAreFound) {
     });
 }
 
+TEST(ObjLoader, LinesAndPointsAreNotReadEvenWhereTinyobjloaderWouldRefuseThem) {
+  // a CAD export's edges with a comment after them: tinyobjloader reads the comment as index 0
+  const std::string dir = test::temp_dir("obj_lines");
+  on_both_readers(dir, "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 # edge\np 0 x\nf 1 2 3\n", [&](const ObjModel& m) {
+    EXPECT_EQ(m.mesh.triangles, (std::vector<std::array<uint32_t, 3>>{{0, 1, 2}}));
+    EXPECT_TRUE(m.warnings.empty());
+  });
+}
+
 TEST(ObjLoader, MtlLibraryNamesWithSpacesAreFound) {
   // `mtllib Low Poly Tree.mtl`: tinyobjloader splits the line at spaces, unless the whole line,
   // naming a file, reaches it with its spaces escaped. Both readers; a missing name before a found
