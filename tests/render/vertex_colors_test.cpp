@@ -1,7 +1,6 @@
 // Vertex colours (`v x y z r g b`): interpolated across each triangle, they multiply the diffuse
-// albedo. A quad, red on the left and green on the right, lit head-on by a directional light of
-// irradiance pi, reads back as Kd times the colour (Lambert: Kd·c/pi · E·cos 0), rendered through the
-// CLI; in the scene, objects without colours stay white beside one with them.
+// albedo. A quad, red on the left and green on the right, lit head-on (headon_quad.h), reads back as
+// Kd times the colour; in the scene, objects without colours stay white beside one with them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +10,7 @@
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
 #include "scene/transform.h"
+#include "headon_quad.h"
 #include "test_support.h"
 
 namespace rayvec {
@@ -18,35 +18,13 @@ namespace {
 
 TEST(VertexColors, MultiplyTheDiffuseAlbedoAcrossTheSurface) {
   const std::string dir = test::temp_dir("vertex_colors");
-  test::write_file(dir + "/quad.mtl", "newmtl m\nKd 0.5 1 1\nillum 1\n");
-  test::write_file(dir + "/quad.obj",
-                   "mtllib quad.mtl\nv -1 -1 0 1 0 0\nv 1 -1 0 0 1 0\nv 1 1 0 0 1 0\nv -1 1 0 1 0 0\n"
-                   "usemtl m\nf 1 2 3 4\n");
-  const std::string pi = std::to_string(3.14159265f);
-  test::write_file(dir + "/scene.json",
-                   "{ \"camera\": { \"eye\": [0, 0, 3], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0],"
-                   " \"fov_y\": 60, \"width\": 40, \"height\": 20 },"
-                   " \"background\": [0, 0, 0], \"ambient\": [0, 0, 0],"
-                   " \"lights\": [ { \"type\": \"directional\", \"direction\": [0, 0, -1],"
-                   " \"irradiance\": [" +
-                       pi + ", " + pi + ", " + pi +
-                       "] } ],"
-                       " \"objects\": [ { \"obj\": \"quad.obj\" } ], \"render\": { \"spp\": 1 } }");
-  const auto r = test::run_cli("render '" + dir + "/scene.json' -o '" + dir + "/out.exr' --quiet");
-  ASSERT_EQ(r.status, 0) << r.err;
-  const Image img = read_image(dir + "/out.exr");
-  ASSERT_EQ(img.width, 40);
-  const double half_width = 3.0 * std::tan(30.0 * 3.141592653589793 / 180.0) * 2.0;
-  int checked = 0;
-  for (int px = 0; px < 40; ++px) {
-    const double x = ((px + 0.5) / 40.0 * 2.0 - 1.0) * half_width;
-    if (std::abs(x) > 0.95) continue;      // off the quad or on its silhouette
+  const Image img = test::render_headon_quad(dir, "newmtl m\nKd 0.5 1 1\nillum 1\n",
+                                             "mtllib quad.mtl\nv -1 -1 0 1 0 0\nv 1 -1 0 0 1 0\nv 1 1 0 0 1 "
+                                             "0\nv -1 1 0 1 0 0\nusemtl m\nf 1 2 3 4\n");
+  const int checked = test::for_each_quad_column(img, [&](int px, double x) {
     const double green = (x + 1.0) / 2.0;  // the colour runs linearly from the left edge to the right
-    EXPECT_NEAR(img.at(px, 10, 0), 0.5 * (1.0 - green), 2e-3) << "pixel " << px;
-    EXPECT_NEAR(img.at(px, 10, 1), green, 2e-3) << "pixel " << px;
-    EXPECT_NEAR(img.at(px, 10, 2), 0.0, 1e-6) << "pixel " << px;
-    ++checked;
-  }
+    test::expect_quad_colour(img, px, 0.5 * (1.0 - green), green, 0.0, "Kd 0.5 1 1 times the colour");
+  });
   EXPECT_GE(checked, 10);
 }
 
