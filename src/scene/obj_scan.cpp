@@ -1,5 +1,6 @@
 #include "scene/obj_scan.h"
 
+#include <array>
 #include <charconv>
 #include <cstdlib>
 #include <string>
@@ -102,6 +103,29 @@ void check_skin_weights(std::string_view rest, const std::string& path, std::siz
   }
 }
 
+// The colour of a `v` line (`v x y z r g b`), as tinyobjloader reads it: three tokens after the
+// position that each start like a number (sign, digit or point), read as far as they look like one
+// (`0.5x` is 0.5) and stored as floats. A component beyond float range (`1e39`, fifty digits) would
+// be an infinite colour: an error, as for a coordinate. Tokens that do not start like numbers give
+// no colour, and are not checked.
+void check_vertex_colour(std::string_view rest, const std::string& path, std::size_t line_no) {
+  for (int k = 0; k < 3; ++k) next_token(rest);  // the position, checked by check_coordinates
+  std::array<std::string_view, 3> tokens;
+  for (std::string_view& token : tokens) {
+    token = next_token(rest);
+    const char c = token.empty() ? '\0' : token.front();
+    if (!(c == '+' || c == '-' || c == '.' || (c >= '0' && c <= '9'))) return;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const std::string text(tokens[k]);
+    const float value = static_cast<float>(std::strtod(text.c_str(), nullptr));
+    if (!std::isfinite(value))
+      throw InputError(path, line_no,
+                       "`v` colour component " + std::to_string(k + 1) + " '" + printable(tokens[k]) +
+                           "' is not a finite number (colours are 0 to 1)");
+  }
+}
+
 // Every number-like token of the lines tinyobjloader reads numbers from (v, vn, vt, vw, t) must
 // have an exponent of at most kMaxExponentDigits digits (obj_scan.h says why).
 void check_exponents(std::string_view rest, const std::string& path, std::size_t line_no) {
@@ -195,6 +219,7 @@ std::vector<LargeFace> check_obj_text(std::string_view text, const std::string& 
     const std::string_view numbers = rest;
     if (keyword == "v") {
       check_coordinates(rest, 3, 0, "v", path, line_no);
+      check_vertex_colour(rest, path, line_no);
       ++seen.v;
     } else if (keyword == "vn") {
       check_coordinates(rest, 3, 0, "vn", path, line_no);

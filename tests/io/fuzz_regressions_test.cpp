@@ -51,12 +51,35 @@ TEST(FuzzRegressions, SkinWeightJointIdThatTinyobjloaderReadsAsNanIsRejected) {
                 "optional sign and decimal point)");
 }
 
+TEST(FuzzRegressions, AVertexColourBeyondFloatRangeIsRejected) {
+  // `v 0 0 0 1 0<BS>f 1555…5mtllibo`: tinyobjloader reads a colour's components as far as they look
+  // like numbers, so fifty digits with a word after them made an infinite colour (the message shows
+  // the first 40 bytes of the token).
+  const std::string path = kFuzz + "obj_colour_beyond_float.obj";
+  EXPECT_EQ(input_error_of([&] { load_obj(path); }), path + ":1: `v` colour component 3 '" +
+                                                         std::string(40, '5').replace(0, 1, "1") +
+                                                         "...' is not a finite number (colours are 0 to 1)");
+  const std::string dir = test::temp_dir("fuzz_colour");
+  for (const char* colour : {"1 0 1e39", "1 -1e39 0", "-inf 0 0", "1 0 3.5e38"}) {
+    test::write_file(dir + "/m.obj", std::string("v 0 0 0\nv 1 0 0 ") + colour + "\nv 0 1 0\nf 1 2 3\n");
+    for (const bool reference : {false, true})
+      EXPECT_NE(input_error_of([&] {
+                  load_obj(dir + "/m.obj", {.reference = reference});
+                }).find("m.obj:2: `v` colour component"),
+                std::string::npos)
+          << colour;
+  }
+  // not colours as tinyobjloader reads them (a word among the three): white, no error
+  test::write_file(dir + "/m.obj", "v 0 0 0 1 x 1e39\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_NO_THROW(load_obj(dir + "/m.obj"));
+}
+
 TEST(FuzzRegressions, ExponentsOfMoreThanTwoDigitsAreRejectedOnEveryLineTinyobjloaderParses) {
   // tinyobjloader's exponent check lets 2147483648 and 2147483649 overflow its int (UBSan:
   // signed-integer-overflow), and from 10^442 on it multiplies a zero mantissa by infinity: NaN
-  // where the text means 0 (`v 0e1000` became a NaN vertex). Each line sends the file down
-  // tinyobjloader's path (a `vw`, `t` or `l` line); the last two go through the fast reader,
-  // which must leave them to that path and so give the same error.
+  // where the text means 0 (`v 0e1000` became a NaN vertex). Each line is refused by the check
+  // before tinyobjloader, beside a polyline (`l`) or a face; the fast reader, which takes both,
+  // must leave such a line to that path and so give the same error.
   const std::string dir = test::temp_dir("fuzz_exponent");
   const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 2 0\n";
   const std::string polyline = vertices + "l 1 2 3 4 5\n", triangle = vertices + "f 1 2 3\n";
