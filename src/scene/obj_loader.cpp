@@ -279,6 +279,7 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
   model.materials = std::move(mtl_reader.read);
   if (!clock.fast) convert_geometry(attrib, shapes, large_faces, materials.size(), path, model);
   clock.convert = seconds_since(t0);
+  model.source = path;
   if (times) *times = clock;
   if (model.mesh.triangles.empty())
     throw InputError(path, 0, "no triangles (the file has no `f` face with 3 or more corners)");

@@ -16,6 +16,7 @@ namespace rayvec {
 inline constexpr std::array<int32_t, 3> kNoCornerIndices{-1, -1, -1};
 
 struct ObjModel {
+  std::string source;  // the file it was read from (for messages)
   // Triangles in file order after triangulating polygons as tinyobjloader does; triangle id = index.
   TriangleMesh mesh;
   std::vector<int32_t> triangle_material;  // per triangle: index into materials, -1 = none

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -177,6 +178,7 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
   std::vector<uint32_t> placed(model.mesh.positions.size(), kUnplaced);
   const bool colored = !model.colors.empty() && model.colors.size() == model.mesh.positions.size();
   const auto unit_interval = [](float x) { return x >= 0 ? std::min(x, 1.0f) : 0.0f; };  // NaN: 0
+  float brightest = 0;  // of the colours of the vertices the triangles use
   if (colored) {
     vertex_colors.resize(mesh.positions.size(), Vec3f{1, 1, 1});  // the objects before: white
     make_room(vertex_colors, mesh.positions.capacity());
@@ -190,6 +192,7 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
       if (colored) {
         const Vec3f c = model.colors[i];
         vertex_colors.push_back({unit_interval(c.x), unit_interval(c.y), unit_interval(c.z)});
+        brightest = std::max({brightest, c.x, c.y, c.z});
       }
     }
     return placed[i];
@@ -231,6 +234,13 @@ void Scene::add_object(const ObjModel& model, const Transform& transform, const 
     }
   }
   add_smooth_normals(*this, model, first_tri);
+  if (brightest > 1) {
+    char largest[32];
+    std::snprintf(largest, sizeof largest, "%g", brightest);
+    warnings.push_back((model.source.empty() ? "" : model.source + ": ") + "vertex colours above 1 (up to " +
+                       largest + ") are clamped to 1: OBJ colours run from 0 to 1" +
+                       (brightest > 2 ? " (divide colours written as 0..255 by 255)" : ""));
+  }
   warnings.insert(warnings.end(), model.warnings.begin(), model.warnings.end());
   ++object_count_;
 }

@@ -51,6 +51,21 @@ TEST(VertexColors, ObjectsWithoutColoursStayWhiteAndColoursAreClamped) {
   EXPECT_EQ(c[0], (Vec3f{1, 0, 0.5f})) << "clamped to [0, 1]";
   EXPECT_EQ(c[1], (Vec3f{0, 0, 1})) << "NaN reads as 0";
   EXPECT_EQ(c[2], (Vec3f{0.25f, 0.5f, 0.75f}));
+  ASSERT_EQ(scene.warnings.size(), 1u) << "the colour above 1";
+  EXPECT_EQ(scene.warnings[0],
+            "vertex colours above 1 (up to 2) are clamped to 1: OBJ colours run from 0 to 1");
+}
+
+TEST(VertexColors, ColoursWrittenAsBytesAreClampedWithAWarningNamingTheFile) {
+  const std::string dir = test::temp_dir("vertex_colors_255");
+  test::write_file(dir + "/m.obj", "v 0 0 0 255 0 0\nv 1 0 0 0 128 0\nv 0 1 0 0 0 64\nf 1 2 3\n");
+  const auto r =
+      test::run_cli("render '" + dir + "/m.obj' -o '" + dir + "/m.png' --width 8 --height 8 --quiet");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find(dir + "/m.obj: vertex colours above 1 (up to 255) are clamped to 1: OBJ colours run "
+                             "from 0 to 1 (divide colours written as 0..255 by 255)"),
+            std::string::npos)
+      << r.err;
 }
 
 }  // namespace
