@@ -3,8 +3,10 @@
 // conversion), and checks that both give the same result: the same InputError message, or the same
 // triangles, attribute indices, materials and warnings with coordinates within one float step. The
 // input is an OBJ file, optionally followed by a line `#--mtl--` and the text of m.mtl (which the
-// OBJ can pull in with `mtllib m.mtl`). The only acceptable failure is InputError; any other
-// exception, crash, sanitizer report, hang or difference between the two paths is a bug.
+// OBJ can pull in with `mtllib m.mtl`). The fast reader's model is then added to a scene (smooth
+// normals for smoothing groups, vertex colours), whose normals and colours must be well formed. The
+// only acceptable failure is InputError; any other exception, crash, sanitizer report, hang or
+// difference between the two paths is a bug.
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -16,6 +18,8 @@
 #include "fuzz_support.h"
 #include "io/input_error.h"
 #include "scene/obj_loader.h"
+#include "scene/scene.h"
+#include "scene/transform.h"
 
 namespace {
 
@@ -90,6 +94,30 @@ std::vector<rayvec::Vec3f> colors_of(const rayvec::ObjModel& m) {
                           : m.colors;
 }
 
+// The model as a scene object, mirrored and scaled unevenly: every shading normal (from the file or
+// from smoothing groups) must be a finite unit vector and every vertex colour within [0, 1].
+void check_scene_object(rayvec::ObjModel model) {
+  for (rayvec::Material& m : model.materials) m.map_Kd.clear();  // no texture files to read
+  rayvec::Transform transform;
+  transform.scale = {2, 1, -0.5f};
+  rayvec::Scene scene;
+  scene.add_object(model, transform);
+  for (std::size_t t = 0; t < scene.mesh.size(); ++t) {
+    // a file's normal is any finite vector (the shading normalizes it); a smoothed one is a unit one
+    const bool from_file = t < model.triangle_normals.size() && model.triangle_normals[t][0] >= 0 &&
+                           model.triangle_normals[t][1] >= 0 && model.triangle_normals[t][2] >= 0;
+    if (const auto normals = scene.normals(t))
+      for (const rayvec::Vec3f& n : *normals) {
+        const float len = rayvec::length(n);
+        if (!std::isfinite(len) || (!from_file && std::fabs(len - 1) > 1e-5f)) __builtin_trap();
+      }
+    if (const auto colors = scene.colors(t))
+      for (const rayvec::Vec3f& c : *colors)
+        for (int k = 0; k < 3; ++k)
+          if (!(c[k] >= 0 && c[k] <= 1)) __builtin_trap();
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
@@ -111,5 +139,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       !close(a.mesh.positions, b.mesh.positions, 3) || !close(a.normals, b.normals, 3) ||
       !close(colors_of(a), colors_of(b), 3) || !close(a.texcoords, b.texcoords, 2))
     __builtin_trap();
+  if (fast.error.empty()) check_scene_object(fast.model);
   return 0;
 }
