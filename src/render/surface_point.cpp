@@ -40,6 +40,10 @@ Vec3f unit_normal(Vec3f e1, Vec3f e2) {
   return normalize_any(c);
 }
 
+// A texture coordinate wrapped into [0, 1] (repeating textures); 0 where it is not finite (a
+// coordinate near float's limit times a large `-s` scale overflows).
+float repeat(float t) { return std::isfinite(t) ? t - std::floor(t) : 0.0f; }
+
 }  // namespace
 
 TriangleNormals::TriangleNormals(const Scene& scene) : normals_(scene.mesh.size()) {
@@ -100,8 +104,10 @@ Vec3f diffuse_albedo(const Scene& scene, const SurfacePoint& s) {
   const Texture& img = scene.textures[tex];
   const int width = img.width(), height = img.height();
   // OBJ texture space has v up; image row 0 is the top.
-  const float fx = (s.u - std::floor(s.u)) * float(width) - 0.5f;
-  const float fy = (1.0f - (s.v - std::floor(s.v))) * float(height) - 0.5f;
+  const float u = repeat(s.u * m.map_Kd_scale[0] + m.map_Kd_offset[0]);
+  const float v = repeat(s.v * m.map_Kd_scale[1] + m.map_Kd_offset[1]);
+  const float fx = u * float(width) - 0.5f;
+  const float fy = (1.0f - v) * float(height) - 0.5f;
   const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
   const float ax = fx - float(x0), ay = fy - float(y0);
   auto texel = [&](int x, int y) {

@@ -44,8 +44,9 @@ class TriangleNormals {
 SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
                            const TriangleNormals* normals = nullptr);
 
-// Diffuse albedo at the point: Kd, times the map_Kd texture (bilinear, repeating) when present,
-// times the vertex colour.
+// Diffuse albedo at the point: Kd, times the map_Kd texture (bilinear, repeating, at the texture
+// coordinates scaled and offset as the MTL's `-s` and `-o` say) when present, times the vertex
+// colour.
 Vec3f diffuse_albedo(const Scene& scene, const SurfacePoint& s);
 
 }  // namespace rayvec

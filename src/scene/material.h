@@ -1,5 +1,6 @@
 // Material: the MTL values rayvec reads (Wavefront MTL names), with the MTL defaults.
 #pragma once
+#include <array>
 #include <string>
 
 #include "math/vec3.h"
@@ -18,6 +19,9 @@ struct Material {
   float d = 1.0f;              // dissolve (1 = opaque)
   int illum = 2;               // MTL illumination model 0..10
   std::string map_Kd;          // diffuse texture, absolute path ("" = none)
+  // Where map_Kd is looked up: the texture coordinates (u, v) · scale + offset, the MTL options
+  // `-s u v w` and `-o u v w` (w unused: textures are 2-D).
+  std::array<float, 2> map_Kd_scale{1.0f, 1.0f}, map_Kd_offset{0.0f, 0.0f};
 };
 
 }  // namespace rayvec

@@ -1,5 +1,6 @@
 #include "scene/mtl_parser.h"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -82,8 +83,10 @@ int option_values(std::string_view option) {
   return 0;
 }
 
-// The texture name after a `map_Kd`: options skipped, the rest of the line with quotes removed.
-std::string texture_name(std::string_view rest) {
+// A `map_Kd` line's rest: its options — `-s` and `-o` read into `mat` (their first two values,
+// where they are numbers), the others skipped — and the texture name, the rest of the line with
+// quotes removed.
+void read_texture_reference(std::string_view rest, Material& mat) {
   for (;;) {
     rest = trim(rest);
     std::string_view probe = rest;
@@ -91,19 +94,24 @@ std::string texture_name(std::string_view rest) {
     const int values = option_values(option);
     if (values == 0) break;
     rest = probe;
+    std::array<float, 2>* target = option == "-s"   ? &mat.map_Kd_scale
+                                   : option == "-o" ? &mat.map_Kd_offset
+                                                    : nullptr;
     for (int k = 0; k < values; ++k) {
       std::string_view after = rest;
       const std::string_view value = next_token(after);
-      float ignored = 0;
+      float number = 0;
+      const bool is_number = parse_float(value, number);
       // -o/-s/-t take up to three numbers; the others take exactly their count of words.
-      if (value.empty() || (values == 3 && k > 0 && !parse_float(value, ignored))) break;
+      if (value.empty() || (values == 3 && k > 0 && !is_number)) break;
+      if (target && k < 2 && is_number) (*target)[k] = number;
       rest = after;
     }
   }
   rest = trim(rest);
   if (rest.size() >= 2 && (rest.front() == '"' || rest.front() == '\'') && rest.back() == rest.front())
     rest = rest.substr(1, rest.size() - 2);
-  return std::string(rest);
+  mat.map_Kd = std::string(rest);
 }
 
 MtlMaterial new_material(std::string name, std::size_t line) {
@@ -168,7 +176,9 @@ std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& pat
       else
         mat.illum = value, m.illum_text.clear();
     } else if (key == "map_Kd") {
-      mat.map_Kd = texture_name(rest);
+      mat.map_Kd_scale = {1, 1};  // a later map_Kd replaces the earlier one, options included
+      mat.map_Kd_offset = {0, 0};
+      read_texture_reference(rest, mat);
       m.lines.map_Kd = line_no;
       if (m.lines.Kd == 0) mat.Kd = {0.6f, 0.6f, 0.6f};
     }

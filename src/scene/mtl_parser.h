@@ -26,8 +26,8 @@ struct MtlMaterial {
 };
 
 // Reads `newmtl`, `Ka`, `Kd`, `Ks`, `Ke`, `Tf` (or `Kt`), `Ns`, `Ni`, `d`, `Tr` (d = 1 − Tr when no
-// `d`), `illum` and `map_Kd` (texture options such as `-s 1 1 1` skipped; the rest of the line is the
-// name, spaces included, surrounding quotes removed); other keys are ignored. A colour with one
+// `d`), `illum` and `map_Kd` (its scale `-s u v w` and offset `-o u v w` kept, other texture options
+// skipped; the rest of the line is the name, spaces included, surrounding quotes removed); other keys are ignored. A colour with one
 // number is grey (g = b = r, as the MTL specification says). Materials come in file order; lines
 // before the first `newmtl` are ignored. Throws InputError `path:line: ...` for a number that is not
 // a finite float (`Kd 1e39`, `Ni nan`, `Ns x`).

@@ -38,7 +38,11 @@ void MaterialOverride::apply(Material& m) const {
   if (Ni) m.Ni = *Ni;
   if (d) m.d = *d;
   if (illum) m.illum = *illum;
-  if (map_Kd) m.map_Kd = *map_Kd;
+  if (map_Kd) {  // the scene's texture, without the MTL's scale and offset for the one it replaces
+    m.map_Kd = *map_Kd;
+    m.map_Kd_scale = {1, 1};
+    m.map_Kd_offset = {0, 0};
+  }
 }
 
 int32_t Scene::add_material(const Material& m) { return add_material(m, nullptr); }

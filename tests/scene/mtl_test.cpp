@@ -55,6 +55,27 @@ TEST(MtlParser, ReadsValuesWithTheirLines) {
   EXPECT_EQ(parse_mtl("newmtl q\nmap_Kd \"a b.png\"\n", "m.mtl")[0].material.map_Kd, "a b.png");
 }
 
+TEST(MtlParser, TextureScaleAndOffsetAreKeptAndOtherOptionsSkipped) {
+  const auto texture = [](const std::string& line) {
+    return parse_mtl("newmtl m\n" + line + "\n", "m.mtl")[0].material;
+  };
+  const Material both = texture("map_Kd -s 2 3 1 -bm 0.5 -o 0.5 -0.25 0 -clamp on tiles.png");
+  EXPECT_EQ(both.map_Kd, "tiles.png");
+  EXPECT_EQ(both.map_Kd_scale, (std::array<float, 2>{2, 3}));
+  EXPECT_EQ(both.map_Kd_offset, (std::array<float, 2>{0.5f, -0.25f}));
+  const Material one = texture("map_Kd -s 4 -o 0.5 a.png");  // v and w optional: their defaults
+  EXPECT_EQ(one.map_Kd, "a.png");
+  EXPECT_EQ(one.map_Kd_scale, (std::array<float, 2>{4, 1}));
+  EXPECT_EQ(one.map_Kd_offset, (std::array<float, 2>{0.5f, 0}));
+  const Material none = texture("map_Kd -mm 0 1 -t 1 1 1 b.png");
+  EXPECT_EQ(none.map_Kd, "b.png");
+  EXPECT_EQ(none.map_Kd_scale, (std::array<float, 2>{1, 1}));
+  EXPECT_EQ(none.map_Kd_offset, (std::array<float, 2>{0, 0}));
+  const Material later = texture("map_Kd -s 2 2 1 a.png\nmap_Kd b.png");
+  EXPECT_EQ(later.map_Kd, "b.png");
+  EXPECT_EQ(later.map_Kd_scale, (std::array<float, 2>{1, 1})) << "a later map_Kd replaces the options too";
+}
+
 TEST(MtlParser, NonFiniteNumbersNameTheLine) {
   EXPECT_NE(error_of("newmtl a\nKd 1e39 0 0\n").find("m.mtl:2: `Kd` value '1e39' is not a finite number"),
             std::string::npos);

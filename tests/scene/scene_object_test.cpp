@@ -139,5 +139,22 @@ TEST(SceneObject, CornerAttributesIndexEachObjectsOwnTables) {
   EXPECT_EQ((*scene.uv(2))[0], (std::array<float, 2>{0.75f, 1.0f})) << "the others keep theirs";
 }
 
+TEST(SceneObject, ASceneTextureOverrideDropsTheMtlPlacementOfTheOneItReplaces) {
+  Material m;
+  m.map_Kd = "/models/tiles.png";
+  m.map_Kd_scale = {4, 4};
+  m.map_Kd_offset = {0.5f, 0};
+  MaterialOverride kd_only;
+  kd_only.Kd = Vec3f{1, 0, 0};
+  kd_only.apply(m);
+  EXPECT_EQ(m.map_Kd_scale, (std::array<float, 2>{4, 4})) << "the MTL's texture stays where it was";
+  MaterialOverride texture;
+  texture.map_Kd = "/scene/wood.png";
+  texture.apply(m);
+  EXPECT_EQ(m.map_Kd, "/scene/wood.png");
+  EXPECT_EQ(m.map_Kd_scale, (std::array<float, 2>{1, 1}));
+  EXPECT_EQ(m.map_Kd_offset, (std::array<float, 2>{0, 0}));
+}
+
 }  // namespace
 }  // namespace rayvec
