@@ -27,10 +27,10 @@ struct MtlMaterial {
 
 // Reads `newmtl`, `Ka`, `Kd`, `Ks`, `Ke`, `Tf` (or `Kt`), `Ns`, `Ni`, `d`, `Tr` (d = 1 − Tr when no
 // `d`), `illum` and `map_Kd` (its scale `-s u v w` and offset `-o u v w` kept, other texture options
-// skipped; the rest of the line is the name, spaces included, surrounding quotes removed); other keys are ignored. A colour with one
-// number is grey (g = b = r, as the MTL specification says). Materials come in file order; lines
-// before the first `newmtl` are ignored. Throws InputError `path:line: ...` for a number that is not
-// a finite float (`Kd 1e39`, `Ni nan`, `Ns x`).
+// skipped; the rest of the line is the name, spaces included, surrounding quotes removed); other
+// keys are ignored. A colour with one number is grey (g = b = r, as the MTL specification says).
+// Materials come in file order; lines before the first `newmtl` are ignored. Throws InputError
+// `path:line: ...` for a number that is not a finite float (`Kd 1e39`, `Ni nan`, `Ns x`).
 std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& path);
 
 }  // namespace rayvec
