@@ -342,17 +342,12 @@ void parse_obj_chunk(std::string_view text, ObjChunk& chunk) {
       chunk.events.push_back({ObjEvent::mtllib, chunk.lines, chunk.triangles.size(),
                               std::string(start, static_cast<std::size_t>(in.pos() - start))});
       ok = in.next_line();
-    } else if (key == "g" && !in.at_line_end()) {
-      in.skip_blanks();
-      if (in.at_line_end())
-        chunk.events.push_back({ObjEvent::empty_group, chunk.lines, chunk.triangles.size(), {}});
-      ok = in.next_line();
     } else if (key == "s" && !in.at_line_end()) {
       ok = smoothing_line(in, chunk) && in.next_line();
     } else if (key == "t") {
       ok = exponents_accepted(in) && in.next_line();  // tags: their numbers are not used
     } else {
-      ok = in.next_line();  // blank lines, comments, o and what tinyobjloader ignores
+      ok = in.next_line();  // blank lines, comments, g, o and what tinyobjloader ignores
     }
   }
   chunk.ok = ok;

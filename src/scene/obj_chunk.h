@@ -21,7 +21,7 @@ namespace rayvec {
 // A line whose effect depends on what came before it in the file (MTL libraries load in file
 // order, `usemtl` looks its name up in what has loaded so far); replayed in order after parsing.
 struct ObjEvent {
-  enum Kind : uint8_t { usemtl, mtllib, empty_group } kind;
+  enum Kind : uint8_t { usemtl, mtllib } kind;
   std::size_t line;      // 1-based, within the chunk
   std::size_t triangle;  // triangles of the chunk before this line
   std::string text;      // usemtl: the name; mtllib: the rest of the line after `mtllib `

@@ -146,26 +146,20 @@ std::vector<int32_t> replay_materials(const std::vector<ObjChunk>& chunks, const
                   material.begin() + static_cast<std::ptrdiff_t>(triangle), current);
         from = triangle;
         current = it == by_name.end() ? -1 : it->second;
-      } else if (e.kind == ObjEvent::mtllib) {
-        bool found = false;
+      } else {
+        // the first name that loads, or one loaded before, counts (tinyobjloader's second warning
+        // for a line of names that all fail, which load_obj drops, is not written)
         for (const std::string& name : mtllib_names(mtllib_text(e.text, mtl.exists))) {
-          if (loaded.count(name) > 0) {
-            found = true;
-            continue;
-          }
+          if (loaded.count(name) > 0) continue;
           std::string mtl_warn, mtl_err;
           const bool ok = mtl.load(name, by_name, mtl_warn, mtl_err);
           warn += mtl_warn;
           err += mtl_err;
           if (ok) {
-            found = true;
             loaded.insert(name);
             break;
           }
         }
-        if (!found) warn += "Failed to load material file(s). Use default material.\n";
-      } else {
-        warn += "Empty group name. line: " + std::to_string(at[i].lines + e.line) + "\n";
       }
     }
   }
