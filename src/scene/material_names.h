@@ -40,14 +40,6 @@ using MtlFileExists = std::function<bool(const std::string& name)>;
 // name — `mtllib Low Poly Tree.mtl`, as some exporters write a name with spaces.
 std::string mtllib_text(std::string_view rest, const MtlFileExists& exists);
 
-// `text` (an OBJ file) as tinyobjloader is to read it: the name of every `usemtl` line written as
-// its material_key, every `mtllib` line's rest through mtllib_text, and `l` (line) and `p` (point)
-// lines emptied — rayvec draws neither, and tinyobjloader refuses the whole file for one it cannot
-// read (`l 1 2 # edge`: the comment as index 0); line ends and everything else unchanged.
-// `usemtl_lines` receives the file's `usemtl` lines in order.
-std::string text_for_tinyobjloader(std::string_view text, std::vector<UsemtlLine>& usemtl_lines,
-                                   const MtlFileExists& exists);
-
 // The warning for a `usemtl` line whose material no MTL file loaded before it defines, as both OBJ
 // readers write it before load_obj words it for the user: tinyobjloader's words,
 // "material [ 'KEY' ] not found in .mtl", then " (line N)". parse_unknown_material reads `key`

@@ -22,6 +22,7 @@
 #include "scene/mtl_file.h"
 #include "scene/obj_fast.h"
 #include "scene/obj_scan.h"
+#include "scene/tinyobj_text.h"
 #include "scene/polygon_triangulation.h"
 #include "scene/texture_path.h"
 
@@ -265,8 +266,7 @@ ObjModel load_obj(const std::string& path, const ObjLoadOptions& options, ObjLoa
     const double before_check = seconds_since(t0);
     large_faces = check_obj_text(text, path);
     clock.check = seconds_since(t0) - before_check;
-    std::istringstream in{text_for_tinyobjloader(
-        text, usemtl_lines, [&](const std::string& name) { return mtl_reader.exists(name); })};
+    std::istringstream in{text_for_tinyobjloader(text, usemtl_lines, mtl.exists)};
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader, false))
       throw InputError(path, 0, "cannot parse: " + err);
     warn = with_usemtl_lines(warn, usemtl_lines);

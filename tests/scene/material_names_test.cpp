@@ -1,5 +1,5 @@
-// written_material_name, material_key and text_for_tinyobjloader: a `usemtl` line names the whole rest of its
-// line, and the text handed to tinyobjloader keeps every line and line end.
+// written_material_name, material_key, mtllib_text: a `usemtl` line names the whole rest of its
+// line; an `mtllib` line's names as tinyobjloader is to split them.
 #include "scene/material_names.h"
 
 #include <gtest/gtest.h>
@@ -29,46 +29,11 @@ TEST(MaterialNames, KeysHaveNoBlanksAndGiveTheNameBack) {
   EXPECT_NE(material_key("Material #25"), material_key("Material #26"));
 }
 
-TEST(MaterialNames, OnlyUsemtlLinesAreRewrittenAndLineEndsStay) {
-  const std::string text =
-      "v 0 0 0\r\nusemtl Material #25\r\n  usemtl\tA B \nusemtlC D\rg a b\nf 1 2 3\n# usemtl x y\nusemtl";
-  const std::string want = std::string("v 0 0 0\r\nusemtl Material\x1f#25\r\n  usemtl A\x1f") +
-                           "B\nusemtl C\x1f" + "D\rg a b\nf 1 2 3\n# usemtl x y\nusemtl ";
-  std::vector<UsemtlLine> lines;
-  EXPECT_EQ(text_for_tinyobjloader(text, lines, no_file), want);
-  ASSERT_EQ(lines.size(), 4u);
-  EXPECT_EQ(lines[0].line, 2u);
-  EXPECT_EQ(lines[0].key, "Material\x1f#25");
-  EXPECT_EQ(lines[1].line, 3u);
-  EXPECT_EQ(lines[2].line, 4u);  // a lone CR ends a line too
-  EXPECT_EQ(lines[2].key,
-            "C\x1f"
-            "D");
-  EXPECT_EQ(lines[3].line, 8u);
-  EXPECT_EQ(lines[3].key, "");
-  lines.clear();
-  EXPECT_EQ(text_for_tinyobjloader("f 1 2 3\n", lines, no_file), "f 1 2 3\n");
-  EXPECT_EQ(text_for_tinyobjloader("", lines, no_file), "");
-  EXPECT_TRUE(lines.empty());
-}
-
 TEST(MaterialNames, MtllibBackslashesAreSeparatorsUnlessTheyEscapeASpace) {
   EXPECT_EQ(mtllib_text("..\\mats\\a.mtl", no_file), "../mats/a.mtl");
   EXPECT_EQ(mtllib_text("C:\\Users\\me\\m.mtl b.mtl", no_file), "C:/Users/me/m.mtl b.mtl");
   EXPECT_EQ(mtllib_text("a\\ b.mtl", no_file), "a\\ b.mtl");
   EXPECT_EQ(mtllib_text("end\\", no_file), "end/");
-  std::vector<UsemtlLine> lines;
-  EXPECT_EQ(text_for_tinyobjloader(
-                "mtllib ..\\m\\a.mtl\r\n\tmtllib\ta\\ b\\c.mtl\nmtllibx\\y\n# mtllib a\\b\n", lines, no_file),
-            "mtllib ../m/a.mtl\r\n\tmtllib\ta\\ b/c.mtl\nmtllibx\\y\n# mtllib a\\b\n");
-  EXPECT_TRUE(lines.empty());
-}
-
-TEST(MaterialNames, LinesAndPointsReachTinyobjloaderEmpty) {
-  std::vector<UsemtlLine> lines;
-  EXPECT_EQ(text_for_tinyobjloader("l 1 2 # edge\r\n\tp 1 0\nf 1 2 3\nl\np\nlx 1\npoly 2\n", lines, no_file),
-            "\r\n\nf 1 2 3\nl\np\nlx 1\npoly 2\n")
-      << "only what tinyobjloader reads as a line or point: the keyword and a blank";
 }
 
 TEST(MaterialNames, AnMtllibLineThatNamesOneFileWithSpacesStaysOneName) {
@@ -85,9 +50,6 @@ TEST(MaterialNames, AnMtllibLineThatNamesOneFileWithSpacesStaysOneName) {
   EXPECT_EQ(mtllib_text("Low\\ Poly Tree.mtl", exists), "Low\\ Poly Tree.mtl") << "escapes: as written";
   EXPECT_EQ(mtllib_text("Tree.mtl", exists), "Tree.mtl");
   EXPECT_TRUE(asked.empty()) << "one name, or escapes written: nothing to ask";
-  std::vector<UsemtlLine> lines;
-  EXPECT_EQ(text_for_tinyobjloader("mtllib Low Poly Tree.mtl\r\nusemtl a\n", lines, exists),
-            "mtllib Low\\ Poly\\ Tree.mtl\r\nusemtl a\n");
 }
 
 TEST(MaterialNames, UnknownMaterialWarningsReadBack) {
