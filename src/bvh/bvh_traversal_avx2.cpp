@@ -16,6 +16,7 @@ constexpr Isa kThisIsa = Isa::avx2;
 #include "kernels/moller_trumbore.inl"
 #include "kernels/mt_float.inl"
 #include "kernels/watertight.inl"
+#include "bvh/packet_slot_cull.inl"
 #include "bvh/packet_leaf.inl"
 #include "bvh/watertight_packet_leaf.inl"
 #include "bvh/packet_traversal.inl"

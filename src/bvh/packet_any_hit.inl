@@ -32,14 +32,16 @@ struct PacketAnyRun {
 };
 
 // The lanes of `lanes` occluded within the leaf `ref`.
+template <class Children>
 RAYVEC_INLINE unsigned packet_leaf_occluded(const TriangleArrays& tris, const TriangleKernels& kernels,
                                             const Ray* rays, uint32_t ref, unsigned lanes,
-                                            const PacketAnyRun& run) {
+                                            const PacketAnyRun& run, const Children& children) {
   const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
   if (run.leaf == PacketAnyLeaf::mt)
     return mt_packet_occluded<pfloat>(tris, begin, end, run.q, lanes, run.filters);
   if (run.leaf == PacketAnyLeaf::watertight)
-    return watertight_packet_occluded<pfloat>(tris, begin, end, run.wq, run.tlimit, lanes, run.filters);
+    return watertight_packet_occluded<pfloat>(tris, begin, children.slots(tris, begin, end), run.wq,
+                                              run.tlimit, lanes, run.filters);
   unsigned found = 0;
   for (unsigned m = lanes; m != 0; m &= m - 1) {
     const int k = __builtin_ctz(m);
@@ -107,7 +109,7 @@ unsigned bvh_packet_occlude(const BvhArrays& bvh, const TriangleArrays& tris, co
         continue;
       }
     } else if (ref != kEmptyRef) {
-      open &= ~packet_leaf_occluded(tris, kernels, rays, ref, lanes, run);
+      open &= ~packet_leaf_occluded(tris, kernels, rays, ref, lanes, run, children);
       if (open == 0) break;
     }
     // pop, dropping entries whose lanes all have a hit

@@ -107,19 +107,27 @@ RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& 
 // every child against the whole packet (B::hits_hull) instead of one test a child. A camera packet
 // enters few of a wide node's children, so this skips most of the per-child tests
 // (benchmarks.md#decision-hull-pretest). It only filters: a child it passes is tested lane by lane
-// as before, so the results are unchanged bit for bit.
+// as before, so the results are unchanged bit for bit. slots(): the slots of a leaf the `watertight`
+// packet kernels step — all of them, or with a hull those SlotCull keeps (packet_slot_cull.inl).
 template <class B, bool WithHull>
 struct PacketChildren;
 template <class B>
 struct PacketChildren<B, false> {
   RAYVEC_INLINE unsigned of(const float (*)[B::N]) const { return (1u << B::N) - 1u; }
+  RAYVEC_INLINE uint64_t slots(const TriangleArrays&, uint32_t begin, uint32_t end) const {
+    return leaf_slot_bits(begin, end);
+  }
   RAYVEC_INLINE void set_tmax(float) {}
 };
 template <class B>
 struct PacketChildren<B, true> {
   decltype(B::prepare_hull(PacketHull{})) hull;
   float tmax;  // the largest tmax of the packet's lanes
+  SlotCull cull;
   RAYVEC_INLINE unsigned of(const float (*b)[B::N]) const { return B::hits_hull(b, hull, tmax); }
+  RAYVEC_INLINE uint64_t slots(const TriangleArrays& T, uint32_t begin, uint32_t end) const {
+    return cull.slots(T, begin, end);
+  }
   RAYVEC_INLINE void set_tmax(float t) { tmax = t; }
 };
 
@@ -203,7 +211,8 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
       } else if (leaf == PacketLeaf::mt) {
         mt_packet_closest<pfloat, false>(tris, begin, end, q, lanes, tmax, initial, hits);
       } else if (leaf == PacketLeaf::watertight) {
-        watertight_packet_closest<pfloat>(tris, begin, end, run.wq, lanes, tmax, initial, hits);
+        watertight_packet_closest<pfloat>(tris, begin, children.slots(tris, begin, end), run.wq, lanes, tmax,
+                                          initial, hits);
       } else {
         for (unsigned m = lanes; m != 0; m &= m - 1) {
           const int k = __builtin_ctz(m);
@@ -288,7 +297,9 @@ RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, 
     }
     if (uniform) {
       auto boxes = PK::template Forward<true>::load(rows, neg, bvh.box_epsilon);
-      PacketChildren<B, true> children{B::prepare_hull(boxes.hull(active)), boxes.max_tmax(active)};
+      const PacketHull hull = boxes.hull(active);
+      PacketChildren<B, true> children{B::prepare_hull(hull), boxes.max_tmax(active),
+                                       slot_cull(hull, hmax_lanes(m, active))};
       traverse(boxes, children);
     } else {
       auto boxes = PK::template Forward<false>::load(rows, neg, bvh.box_epsilon);

@@ -17,6 +17,8 @@
 // with the lane's previous hit (earlier leaves) is packet_leaf_finish's. The t bound, the double
 // refinement of zero edge functions and the zero-area test are the single-ray kernel's, lane by lane
 // (the zero-area test once per triangle). No tmin pre-test, so packets may mix tmin = 0 and tmin != 0.
+// A uniform forward packet skips the slots no lane's kernel test can accept (packet_slot_cull.inl's
+// SlotCull, which says why that changes no answer).
 //
 // Only float `watertight` has a packet leaf besides `mt`: watertight64 (and mt64, paper) packets keep
 // the per-lane fallback through the kernel table — the double kernels step half as many lanes and
@@ -107,12 +109,14 @@ struct NonzeroAreaTriangle {
   }
 };
 
-// Slots [begin, end) against the lanes set in `lanes`, with limit, initial and hits as
-// mt_packet_closest takes and updates them. Returns the lanes whose hit changed.
+// The slots set in `slots` (leaf_slot_bits' layout from leaf_first(begin): every slot of the leaf,
+// or those SlotCull keeps, packet_slot_cull.inl) against the lanes set in `lanes`, with limit, initial
+// and hits as mt_packet_closest takes and updates them. Returns the lanes whose hit changed.
 template <class V>
-unsigned watertight_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end,
+unsigned watertight_packet_closest(const TriangleArrays& T, uint32_t begin, uint64_t slots,
                                    const WatertightPacketRays<V>& q, unsigned lanes, float* limit,
                                    float* initial, Hit* hits) {
+  const uint32_t first = leaf_first(begin);
   const V zero = V::broadcast(0.0f);
   V best_t = V::load(initial);  // lanes still at `initial` have no hit
   V un = zero, vn = zero, slot = zero;
@@ -122,7 +126,8 @@ unsigned watertight_packet_closest(const TriangleArrays& T, uint32_t begin, uint
     if (class_lanes == 0) continue;
     const WatertightRay<V> r = watertight_packet_class<V>(T, q, c);
     const typename V::Mask active = mask_from_bits(V{}, class_lanes);
-    for (uint32_t i = begin; i < end; ++i) {
+    for (uint64_t m = slots; m != 0; m &= m - 1) {
+      const uint32_t i = first + uint32_t(__builtin_ctzll(m));
       const LaneHits<V> h = watertight_lanes<V>(r, WatertightBroadcast<V>{slot_offset(i)},
                                                 NonzeroAreaTriangle<V>{T, i}, active, best_t);
       if (!any(h.mask)) continue;
@@ -138,20 +143,23 @@ unsigned watertight_packet_closest(const TriangleArrays& T, uint32_t begin, uint
   return packet_leaf_finish<V>(T, found, best_t, un, vn, slot, limit, initial, hits);
 }
 
-// Slots [begin, end) against the lanes set in `lanes`: the lanes that hit one of them with
-// tmin <= t < tlimit (per lane: next_up(tmax), watertight_any_limit) and whose filter (filters: null
-// or one per lane) accepts it — per lane and triangle the single-ray any-hit kernel's test
-// (watertight_lanes), so the same occlusion. A lane leaves the loop at its first hit.
+// The slots set in `slots` (as for watertight_packet_closest) against the lanes set in `lanes`: the
+// lanes that hit one of them with tmin <= t < tlimit (per lane: next_up(tmax), watertight_any_limit)
+// and whose filter (filters: null or one per lane) accepts it — per lane and triangle the single-ray
+// any-hit kernel's test (watertight_lanes), so the same occlusion. A lane leaves the loop at its
+// first hit.
 template <class V>
-unsigned watertight_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end,
+unsigned watertight_packet_occluded(const TriangleArrays& T, uint32_t begin, uint64_t slots,
                                     const WatertightPacketRays<V>& q, V tlimit, unsigned lanes,
                                     const HitFilter* filters) {
+  const uint32_t first = leaf_first(begin);
   unsigned found = 0;
   for (int c = 0; c < 6; ++c) {
     unsigned class_lanes = lanes & q.lanes[c];
     if (class_lanes == 0) continue;
     const WatertightRay<V> r = watertight_packet_class<V>(T, q, c);
-    for (uint32_t i = begin; i < end && class_lanes != 0; ++i) {
+    for (uint64_t m = slots; m != 0 && class_lanes != 0; m &= m - 1) {
+      const uint32_t i = first + uint32_t(__builtin_ctzll(m));
       const LaneHits<V> h =
           watertight_lanes<V>(r, WatertightBroadcast<V>{slot_offset(i)}, NonzeroAreaTriangle<V>{T, i},
                               mask_from_bits(V{}, class_lanes), tlimit);
