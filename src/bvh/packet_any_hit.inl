@@ -38,10 +38,11 @@ RAYVEC_INLINE unsigned packet_leaf_occluded(const TriangleArrays& tris, const Tr
                                             const PacketAnyRun& run, const Children& children) {
   const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
   if (run.leaf == PacketAnyLeaf::mt)
-    return mt_packet_occluded<pfloat>(tris, begin, end, run.q, lanes, run.filters);
+    return mt_packet_occluded<pfloat>(tris, begin, end, children.template slots<true>(tris, begin, end),
+                                      run.q, lanes, run.filters);
   if (run.leaf == PacketAnyLeaf::watertight)
-    return watertight_packet_occluded<pfloat>(tris, begin, children.slots(tris, begin, end), run.wq,
-                                              run.tlimit, lanes, run.filters);
+    return watertight_packet_occluded<pfloat>(tris, begin, children.template slots<false>(tris, begin, end),
+                                              run.wq, run.tlimit, lanes, run.filters);
   unsigned found = 0;
   for (unsigned m = lanes; m != 0; m &= m - 1) {
     const int k = __builtin_ctz(m);

@@ -18,7 +18,9 @@
 // mt_finish's. The upper pre-test threshold is per lane here (its own best·(1 + 2^-20)) where the single-ray
 // kernel shares the nearest of its lanes; both are conservative (every triangle that can be nearer passes),
 // so the exact stage alone decides — outside subnormal |det|, where no pre-test product is accurate to 2^-20
-// and the two layouts may disagree about a hit that far from normal range.
+// and the two layouts may disagree about a hit that far from normal range. Of a leaf's slots [begin, end)
+// the kernels step those set in `slots` (leaf_slot_bits' layout): all of them, or for a uniform forward
+// packet those packet_slot_cull.inl's SlotCull keeps, which changes no answer.
 //
 // Float `mt` has this kernel and float `watertight` its own (watertight_packet_leaf.inl); paper, mt64
 // and watertight64 packets keep the per-lane fallback (the single-ray kernel per active lane), as does
@@ -117,14 +119,15 @@ RAYVEC_INLINE unsigned packet_leaf_finish(const TriangleArrays& T, unsigned foun
   return changed;
 }
 
-// Slots [begin, end) against the lanes set in `lanes`. Per lane k: limit[k] = min(tmax_k,
-// hits[k].t) and initial[k] = next_up(limit[k]) on entry (accepting t == limit, so a lower id at
+// The slots set in `slots` (of [begin, end)) against the lanes set in `lanes`. Per lane k: limit[k] =
+// min(tmax_k, hits[k].t) and initial[k] = next_up(limit[k]) on entry (accepting t == limit, so a lower id at
 // the same t still wins); hits[k], limit[k] and initial[k] are updated where a lane finds a nearer
 // hit (equal t: lower id). TminZero: every lane in `lanes` has tmin == 0. Returns the lanes whose
 // hit changed.
 template <class V, bool TminZero>
-unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, const MtPacketRays<V>& q,
-                           unsigned lanes, float* limit, float* initial, Hit* hits) {
+unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end, uint64_t slots,
+                           const MtPacketRays<V>& q, unsigned lanes, float* limit, float* initial,
+                           Hit* hits) {
   const typename V::Mask active = mask_from_bits(V{}, lanes);
   const V zero = V::broadcast(0.0f), widen = V::broadcast(kMtWiden);
   V best_t = V::load(initial);
@@ -156,20 +159,22 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   mt_leaf_edges<V>(T, begin, end, edges);
   // Two triangles per iteration, one branch on both pre-tests (benchmarks.md#decision-packet-leaf-kernel);
   // the steps that pass are still taken in slot order.
-  uint32_t i = begin;
-  for (; i + 1 < end; i += 2) {
-    const MtNumerators<V> c0 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
-    const MtNumerators<V> c1 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i + 1), q.r);
-    const unsigned p0 = bits(mt_sign_pretest<V, TminZero>(c0, active, neg_lo, hi));
-    const unsigned p1 = bits(mt_sign_pretest<V, TminZero>(c1, active, neg_lo, hi));
-    if ((p0 | p1) == 0) continue;
-    if (p0) step(c0, i);
-    if (p1) step(c1, i + 1);  // its pre-test used the older, larger hi: still conservative
-  }
-  if (i < end) {
-    const MtNumerators<V> c = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
-    if (any(mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi))) step(c, i);
-  }
+  for_slot_pairs(
+      edges.first, slots,
+      [&](uint32_t i, uint32_t j) __attribute__((always_inline)) {
+        const MtNumerators<V> c0 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
+        const MtNumerators<V> c1 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, j), q.r);
+        const unsigned p0 = bits(mt_sign_pretest<V, TminZero>(c0, active, neg_lo, hi));
+        const unsigned p1 = bits(mt_sign_pretest<V, TminZero>(c1, active, neg_lo, hi));
+        if ((p0 | p1) == 0) return;
+        if (p0) step(c0, i);
+        if (p1) step(c1, j);  // its pre-test used the older, larger hi: still conservative
+      },
+      [&](uint32_t i) __attribute__((always_inline)) {
+        const MtNumerators<V> c = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
+        if (any(mt_sign_pretest<V, TminZero>(c, active, neg_lo, hi))) step(c, i);
+      },
+      [] { return true; });
   if (found == 0) return 0;
   // u and v divided once, as mt_finish does (0 − un: no −0)
   return packet_leaf_finish<V>(T, found, best_t, (zero - un) / adet, vn / adet, slot, limit, initial, hits);
@@ -189,7 +194,8 @@ RAYVEC_INLINE unsigned packet_filter_accepts(const TriangleArrays& T, uint32_t i
   return hit;
 }
 
-// Slots [begin, end) against the lanes set in `lanes`: the lanes that hit one of them with
+// The slots set in `slots` (of [begin, end)) against the lanes set in `lanes`: the lanes that hit one
+// of them with
 // tmin <= t <= tmax and whose filter (filters: null or one per lane) accepts it. `q`: the packet's
 // rays as lanes with, per lane, the single-ray kernel's constants (mt_any_hit_ray's lo, hi,
 // tlimit). Per lane and triangle the single-ray kernel's test, mt_any_hit_lanes, on the numerators
@@ -197,8 +203,8 @@ RAYVEC_INLINE unsigned packet_filter_accepts(const TriangleArrays& T, uint32_t i
 // when the single-ray kernel finds its ray occluded in the same range (outside subnormal |det|,
 // mt_packet_closest's caveat). A lane leaves the loop at its first hit.
 template <class V>
-unsigned mt_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, const MtAnyHitRay<V>& q,
-                            unsigned lanes, const HitFilter* filters) {
+unsigned mt_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, uint64_t slots,
+                            const MtAnyHitRay<V>& q, unsigned lanes, const HitFilter* filters) {
   const V neg_lo = V::broadcast(0.0f) - q.lo;
   unsigned found = 0;
   // the exact tests of one triangle that passed the pre-test
@@ -213,20 +219,22 @@ unsigned mt_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t en
   mt_leaf_edges<V>(T, begin, end, edges);
   // Two triangles per iteration, one branch on both sign pre-tests (conservative: every lane the
   // exact tests accept passes them; mt_sign_pretest), as mt_packet_closest does.
-  uint32_t i = begin;
-  for (; i + 1 < end && lanes != 0; i += 2) {
-    const typename V::Mask active = mask_from_bits(V{}, lanes);
-    const MtNumerators<V> c0 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
-    const MtNumerators<V> c1 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i + 1), q.r);
-    const unsigned p0 = bits(mt_sign_pretest<V, false>(c0, active, neg_lo, q.hi));
-    const unsigned p1 = bits(mt_sign_pretest<V, false>(c1, active, neg_lo, q.hi));
-    if ((p0 | p1) == 0) continue;
-    if (p0) step(c0, i);
-    if (p1) step(c1, i + 1);
-  }
-  if (i < end && lanes != 0) {
-    const MtNumerators<V> c = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
-    if (any(mt_sign_pretest<V, false>(c, mask_from_bits(V{}, lanes), neg_lo, q.hi))) step(c, i);
-  }
+  for_slot_pairs(
+      edges.first, slots,
+      [&](uint32_t i, uint32_t j) __attribute__((always_inline)) {
+        const typename V::Mask active = mask_from_bits(V{}, lanes);
+        const MtNumerators<V> c0 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
+        const MtNumerators<V> c1 = mt_numerator_values<V>(mt_broadcast<V>(T, edges, j), q.r);
+        const unsigned p0 = bits(mt_sign_pretest<V, false>(c0, active, neg_lo, q.hi));
+        const unsigned p1 = bits(mt_sign_pretest<V, false>(c1, active, neg_lo, q.hi));
+        if ((p0 | p1) == 0) return;
+        if (p0) step(c0, i);
+        if (p1) step(c1, j);
+      },
+      [&](uint32_t i) __attribute__((always_inline)) {
+        const MtNumerators<V> c = mt_numerator_values<V>(mt_broadcast<V>(T, edges, i), q.r);
+        if (any(mt_sign_pretest<V, false>(c, mask_from_bits(V{}, lanes), neg_lo, q.hi))) step(c, i);
+      },
+      [&] { return lanes != 0; });
   return found;
 }

@@ -1,30 +1,40 @@
-// Which triangles of a leaf a `watertight` ray packet steps. The packet leaf kernel
-// (watertight_packet_leaf.inl) steps one triangle against all lanes at a time, so its cost grows
-// with the leaf's triangles — and leaves are sized for single rays, which test 8 or 16 triangles in
-// one kernel step (benchmarks.md#decision-leaf-size, #decision-merged-leaves). A uniform forward
-// packet (every tmin >= 0, one direction sign per axis: camera tiles, shadow rays toward one light)
-// first tests the boxes of all the leaf's triangles against the hull of its lanes — the hull
-// pre-test of a node's children (box_lanes.inl, hits_hull) with each triangle's box in place of a
-// child's — and steps only the triangles whose box the hull enters
-// (benchmarks.md#decision-packet-slot-cull). Included by the BVH ISA units (bvh_traversal_<isa>.cpp)
-// after their box lanes, inside namespace rayvec::<isa>; used by watertight_packet_leaf.inl and
-// packet_traversal.inl.
+// Which triangles of a leaf a ray packet steps. The packet leaf kernels (packet_leaf.inl,
+// watertight_packet_leaf.inl) step one triangle against all lanes at a time, so their cost grows with
+// the leaf's triangles — and leaves are sized for single rays, which test 8 or 16 triangles in one
+// kernel step (benchmarks.md#decision-leaf-size, #decision-merged-leaves). A uniform forward packet
+// (every tmin >= 0, one direction sign per axis: camera tiles, shadow rays toward one light) first
+// tests the boxes of all the leaf's triangles against the hull of its lanes — the hull pre-test of a
+// node's children (box_lanes.inl, hits_hull) with each triangle's box in place of a child's — and
+// steps only the triangles whose box the hull enters — in the trees of small meshes, where a leaf's
+// triangles are large beside a packet's footprint (BvhArrays::packet_slot_cull;
+// benchmarks.md#decision-packet-slot-cull).
+// Included by the BVH ISA units (bvh_traversal_<isa>.cpp) after their box lanes, inside namespace
+// rayvec::<isa>; used by the packet leaf kernels and packet_traversal.inl.
 //
-// Why no answer changes. `watertight` decides a hit on the triangle sheared into the ray's space
-// (kernels/watertight.inl), whose vertices are v − o and a shear, each rounded: the decision is the
-// exact one for that triangle moved by a few units in the last place of |v − o| <= |v| + |o|, and a
-// move in ray space is a world offset from the ray no larger. So the exact ray, as a line from its
-// origin on (t >= 0; a reported t exceeds its own rounding error, so the hit is in front), passes
-// within that distance of every triangle the kernel can report for it. Each triangle's box is
-// widened on every side by a margin of 2^-14 of the packet's scale s = max(|o| over its lanes,
-// |coordinates| of the root box), at least 2^-14 / (2·√3) of |v − o| — about 300 units in the last
-// place — and the hull is tested over t in [0, inf) rather than each lane's [tmin, tmax], since a
-// reported t may stray further (t is ill-conditioned for rays that graze the plane). The slab test
-// never drops a box the exact line enters, so every triangle the kernel could report for some lane is
-// stepped, in slot order as before: the same ids, t, u, v bit for bit
-// (tests/bvh/bvh_packet_slot_cull_test.cpp). Float `mt` has no such bound — its barycentric
-// numerators lose accuracy as the ray turns parallel to an edge, by no fixed margin — so `mt` packets
-// step every slot, as do packets that are not uniform and forward (no hull).
+// Why no answer changes. A kernel decides with rounded arithmetic, so a triangle it reports may lie
+// off the exact ray by the rounding error; the cull keeps every triangle the exact ray, as a line
+// from its origin on (t >= 0), passes within that error of. The hull is tested over t in [0, inf)
+// rather than each lane's [tmin, tmax]: a reported t may stray far from the exact one (t is
+// ill-conditioned for rays that graze the plane; a reported hit lies in front of the origin, as the
+// kernels accept t >= tmin >= 0, and for `watertight` t exceeds its own rounding error). The slab
+// test never drops a box the exact line enters. The error, with s = max(|o| over the lanes,
+// |coordinates| of the root box) the packet's scale, |v − o| <= 2·√3·s:
+// - `watertight` decides on the triangle sheared into the ray's space (kernels/watertight.inl), whose
+//   vertices are v − o and a shear, each rounded: the decision is the exact one for that triangle
+//   moved by a few units in the last place of |v − o|, and a move in ray space is a world offset from
+//   the ray no larger. Margin: 2^-14·s, at least 2^-14 / (2·√3) of |v − o|, about 300 units in the
+//   last place.
+// - `mt`'s numerators (u, v: triple products of v0 − o, d and an edge) carry errors of a few units
+//   in the last place of |v − o|·|d|·|e|; as a ray offset that is divided by the sine of the angle
+//   between d and the edge, which is at least the sine of the angle between d and the triangle's
+//   plane, and det's error scales the third edge the same way. So a triangle that some direction of
+//   the packet's direction box (per axis the lanes' extremes) meets at a sine below kGraze = 2^-6
+//   is always stepped (interval arithmetic on d·n), and the others' boxes are widened by 2^-10·s:
+//   at least 2^-10 / (2·√3) of |v − o|, 4,700 units in the last place, 74 after the grazing factor
+//   of 64.
+// So every triangle the kernel could report for some lane is stepped, in slot order as before: the
+// same ids, t, u, v bit for bit (tests/bvh/bvh_packet_slot_cull_test.cpp). Packets that are not
+// uniform and forward (no hull) step every slot.
 
 // A leaf's slots [begin, end) as bits: bit j for slot first + j, first = leaf_first(begin) (a leaf
 // spans at most three blocks of kSlotBlock: 48 bits).
@@ -34,38 +44,101 @@ RAYVEC_INLINE uint64_t leaf_slot_bits(uint32_t begin, uint32_t end) {
   return ((uint64_t(1) << (end - first)) - 1) & ~((uint64_t(1) << (begin - first)) - 1);
 }
 
-// The hull of a uniform forward packet in vfloat lanes over t in [0, inf), and the margin its
+// Calls pair(i, j) for the slots set in `slots` (leaf_slot_bits' layout, from `first`) two at a time
+// in increasing order while keep() holds, and one(i) for an odd last one.
+template <class Pair, class One, class Keep>
+RAYVEC_INLINE void for_slot_pairs(uint32_t first, uint64_t slots, const Pair& pair, const One& one,
+                                  const Keep& keep) {
+  while (slots != 0 && keep()) {
+    const uint32_t i = first + uint32_t(__builtin_ctzll(slots));
+    slots &= slots - 1;
+    if (slots == 0) {
+      one(i);
+      return;
+    }
+    const uint32_t j = first + uint32_t(__builtin_ctzll(slots));
+    slots &= slots - 1;
+    pair(i, j);
+  }
+}
+
+// The sine below which `mt` counts a triangle as grazed by the packet (see above).
+inline constexpr float kGraze = 0x1p-6f;
+
+// The hull of a uniform forward packet in vfloat lanes over t in [0, inf), and the margins its
 // triangle boxes are widened by.
 struct SlotCull {
   BoxHull<vfloat> hull;
-  float margin;
+  bool on;                // BvhArrays::packet_slot_cull: else every slot
+  float margin;           // watertight
+  float margin_mt;        // mt
+  vfloat dlo[3], dhi[3];  // mt: per axis the smallest and largest direction component of the lanes
+  vfloat graze2;          // mt: kGraze² · the largest |d|² of the lanes
 
   // The slots of [begin, end) whose triangle box, widened by the margin, the hull enters, in
   // leaf_slot_bits' layout. The boxes are formed from the triangle rows a block at a time, laid out
   // as a 16-wide node's child boxes; padding slots (zero area) may pass or not: no kernel reports them.
+  // Mt: also every triangle that some direction of the packet's direction box meets at a sine below kGraze.
+  template <bool Mt>
   RAYVEC_INLINE uint64_t slots(const TriangleArrays& T, uint32_t begin, uint32_t end) const {
+    if (!on) return leaf_slot_bits(begin, end);
     const uint32_t first = leaf_first(begin);
-    const vfloat m = vfloat::broadcast(margin);
+    const vfloat m = vfloat::broadcast(Mt ? margin_mt : margin);
     uint64_t found = 0;
     for (uint32_t b = first; b < end; b += kSlotBlock) {
       const float* block = T.v0x + slot_offset(b);
       alignas(64) float box[6][kSlotBlock];  // lo x, y, z, hi x, y, z
-      for (uint32_t j = 0; j < kSlotBlock; j += vfloat::W)
+      unsigned grazed = 0;
+      for (uint32_t j = 0; j < kSlotBlock; j += vfloat::W) {
+        vfloat e1[3], e2[3];
         for (uint32_t a = 0; a < 3; ++a) {
           const vfloat v0 = vfloat::load(block + (kRowV0 + a) * kSlotBlock + j);
           const vfloat v1 = vfloat::load(block + (kRowV1 + a) * kSlotBlock + j);
           const vfloat v2 = vfloat::load(block + (kRowV2 + a) * kSlotBlock + j);
           (vmin(vmin(v0, v1), v2) - m).store(box[a] + j);
           (vmax(vmax(v0, v1), v2) + m).store(box[3 + a] + j);
+          e1[a] = v1 - v0;
+          e2[a] = v2 - v0;
         }
-      found |= uint64_t(BoxLanes16::hits_hull(box, hull, __builtin_inff())) << (b - first);
+        if constexpr (Mt) {
+          const vfloat n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                               e1[0] * e2[1] - e1[1] * e2[0]};
+          vfloat lo = vfloat::broadcast(0.0f), hi = lo, n2 = lo;
+          for (int a = 0; a < 3; ++a) {
+            const vfloat p = n[a] * dlo[a], q = n[a] * dhi[a];
+            lo = lo + vmin(p, q);
+            hi = hi + vmax(p, q);
+            n2 = fmadd(n[a], n[a], n2);
+          }
+          const vfloat g = vmax(lo, vfloat::broadcast(0.0f) - hi);  // > 0: d·n keeps its sign
+          // not grazed where g > 0 and g² >= kGraze²·|d|²·|n|² (NaN: grazed)
+          grazed |= (~bits((g > vfloat::broadcast(0.0f)) & (g * g >= graze2 * n2)) & ((1u << vfloat::W) - 1u))
+                    << j;
+        }
+      }
+      found |= uint64_t(BoxLanes16::hits_hull(box, hull, __builtin_inff()) | grazed) << (b - first);
     }
     return found & leaf_slot_bits(begin, end);
   }
 };
 
-// The cull of a packet whose hull is h and scale s (see above).
-RAYVEC_INLINE SlotCull slot_cull(PacketHull h, float s) {
+// The cull of a packet whose hull is h and scale s (see above), d[a] the rows of its directions.
+RAYVEC_INLINE SlotCull slot_cull(bool on, PacketHull h, float s, const pfloat d[3], unsigned active) {
   h.tmin = 0.0f;
-  return {BoxLanes16::prepare_hull(h), s * 0x1p-14f};
+  SlotCull c;
+  c.on = on;
+  if (!on) return c;
+  c.hull = BoxLanes16::prepare_hull(h);
+  c.margin = s * 0x1p-14f;
+  c.margin_mt = s * 0x1p-10f;
+  float d2 = 0.0f;
+  for (int a = 0; a < 3; ++a) {
+    const float lo = hmin_lanes(d[a], active), hi = hmax_lanes(d[a], active);
+    c.dlo[a] = vfloat::broadcast(lo);
+    c.dhi[a] = vfloat::broadcast(hi);
+    const float big = -lo > hi ? -lo : hi;  // the largest |d[a]|
+    d2 += big * big;
+  }
+  c.graze2 = vfloat::broadcast(d2 * (kGraze * kGraze));
+  return c;
 }

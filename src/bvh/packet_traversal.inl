@@ -114,6 +114,7 @@ struct PacketChildren;
 template <class B>
 struct PacketChildren<B, false> {
   RAYVEC_INLINE unsigned of(const float (*)[B::N]) const { return (1u << B::N) - 1u; }
+  template <bool Mt>
   RAYVEC_INLINE uint64_t slots(const TriangleArrays&, uint32_t begin, uint32_t end) const {
     return leaf_slot_bits(begin, end);
   }
@@ -125,8 +126,9 @@ struct PacketChildren<B, true> {
   float tmax;  // the largest tmax of the packet's lanes
   SlotCull cull;
   RAYVEC_INLINE unsigned of(const float (*b)[B::N]) const { return B::hits_hull(b, hull, tmax); }
+  template <bool Mt>
   RAYVEC_INLINE uint64_t slots(const TriangleArrays& T, uint32_t begin, uint32_t end) const {
-    return cull.slots(T, begin, end);
+    return cull.template slots<Mt>(T, begin, end);
   }
   RAYVEC_INLINE void set_tmax(float t) { tmax = t; }
 };
@@ -207,12 +209,14 @@ void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const
     } else if (ref != kEmptyRef) {
       const uint32_t begin = leaf_begin(ref), end = leaf_end(ref);
       if (leaf == PacketLeaf::mt_tmin_zero) {
-        mt_packet_closest<pfloat, true>(tris, begin, end, q, lanes, tmax, initial, hits);
+        mt_packet_closest<pfloat, true>(tris, begin, end, children.template slots<true>(tris, begin, end), q,
+                                        lanes, tmax, initial, hits);
       } else if (leaf == PacketLeaf::mt) {
-        mt_packet_closest<pfloat, false>(tris, begin, end, q, lanes, tmax, initial, hits);
+        mt_packet_closest<pfloat, false>(tris, begin, end, children.template slots<true>(tris, begin, end), q,
+                                         lanes, tmax, initial, hits);
       } else if (leaf == PacketLeaf::watertight) {
-        watertight_packet_closest<pfloat>(tris, begin, children.slots(tris, begin, end), run.wq, lanes, tmax,
-                                          initial, hits);
+        watertight_packet_closest<pfloat>(tris, begin, children.template slots<false>(tris, begin, end),
+                                          run.wq, lanes, tmax, initial, hits);
       } else {
         for (unsigned m = lanes; m != 0; m &= m - 1) {
           const int k = __builtin_ctz(m);
@@ -298,8 +302,9 @@ RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, 
     if (uniform) {
       auto boxes = PK::template Forward<true>::load(rows, neg, bvh.box_epsilon);
       const PacketHull hull = boxes.hull(active);
+      const pfloat d[3] = {pfloat::load(s.soa[3]), pfloat::load(s.soa[4]), pfloat::load(s.soa[5])};
       PacketChildren<B, true> children{B::prepare_hull(hull), boxes.max_tmax(active),
-                                       slot_cull(hull, hmax_lanes(m, active))};
+                                       slot_cull(bvh.packet_slot_cull, hull, hmax_lanes(m, active), d, active)};
       traverse(boxes, children);
     } else {
       auto boxes = PK::template Forward<false>::load(rows, neg, bvh.box_epsilon);

@@ -250,7 +250,8 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule, uint32_t m
   }
   storage_ = std::move(p);
   arrays_ = BvhArrays{
-      storage_.get(), uint32_t(width), count, depth_ * uint32_t(width - 1) + 1, kDefaultBoxEpsilon, {}, {}};
+      storage_.get(), uint32_t(width), count, depth_ * uint32_t(width - 1) + 1, kDefaultBoxEpsilon, {}, {},
+      false};
   switch (width) {
     case 4: root_box<4>(arrays_); break;
     case 8: root_box<8>(arrays_); break;

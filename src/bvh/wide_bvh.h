@@ -42,6 +42,8 @@ struct BvhArrays {
   // the union of the root's child boxes, the bounds of the whole tree (lo = +inf, hi = −inf when
   // there are none): the packets' first test (packet_traversal.inl)
   float root_lo[3], root_hi[3];
+  // uniform forward packets step only the leaf triangles their hull can reach (packet_slot_cull.inl)
+  bool packet_slot_cull;
 };
 
 // How the binary tree is collapsed: greedily, a wide node opening its inner child of the highest
@@ -76,6 +78,7 @@ class WideBvh {
   // Changes the relative widening of ray–box intervals (must stay > 0: with 0, an infinite slab
   // distance times 0 is NaN and the box is missed).
   void set_box_epsilon(float eps) { arrays_.box_epsilon = eps; }
+  void set_packet_slot_cull(bool on) { arrays_.packet_slot_cull = on; }
 
  private:
   LargeBuffer storage_;

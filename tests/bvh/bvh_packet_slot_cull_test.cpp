@@ -1,13 +1,14 @@
-// The packet leaves' slot cull (bvh/packet_slot_cull.inl): a uniform forward `watertight` packet
-// steps in a leaf only the triangles whose box, widened by the cull's margin, the hull of its lanes
-// enters. The cull must never change an answer. The packets here are sixteen copies of one ray, so
-// the hull is that ray alone and the cull drops every triangle it can; their lanes must get exactly
-// what the ray gets alone (closest: same id, bit-identical t, u, v; any hit: the same occlusion, with
-// tmax at the hit and one step before it) — on the hard-case families, on rays that leave a surface
-// at grazing angles, and on rays through the grid lines and grid points of a closed box made of
-// axis-aligned squares (where a triangle's box has a face on the ray's path), near the coordinate
-// origin and far from it; and every ray from inside the box must hit it. Every ISA with packets this
-// CPU has (the others are skipped and named), float `watertight` (float `mt` packets step every slot).
+// The packet leaves' slot cull (bvh/packet_slot_cull.inl): a uniform forward packet steps in a leaf
+// only the triangles whose box, widened by the cull's margin, the hull of its lanes enters (and, for
+// `mt`, every triangle its directions may graze). The cull must never change an answer. The packets
+// here are sixteen copies of one ray, so the hull is that ray alone and the cull drops every triangle
+// it can; their lanes must get exactly what the ray gets alone (closest: same id, bit-identical t, u,
+// v; any hit: the same occlusion, with tmax at the hit and one step before it) — on the hard-case
+// families, on rays that leave a surface at grazing angles, and on rays through the grid lines and
+// grid points of a closed box made of axis-aligned squares (where a triangle's box has a face on the
+// ray's path), near the coordinate origin and far from it; and with `watertight` every ray from
+// inside the box must hit it. Every ISA with packets this CPU has (the others are skipped and named),
+// float `mt` and `watertight` (the intersectors with packet leaves).
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -144,15 +145,18 @@ TEST_P(BvhPacketSlotCull, GrazingRaysLeavingAFaceMatchTheRayAlone) {
       dd[pv] = d[1];
       dd[axis] = -side * angle * std::hypot(d[0], d[1]);  // into the box
       const Vec3f dir{float(dd[0]), float(dd[1]), float(dd[2])};
-      rays.push_back(Ray{origin, dir});
+      // Float `mt` packets disagree with single rays, with or without the cull, on which of two
+      // triangles that both hold the origin a tmin = 0 ray reports at t = ±0: left out for `mt`.
+      if (GetParam().intersector != Intersector::mt) rays.push_back(Ray{origin, dir});
       rays.push_back(Ray{origin, dir, float(1e-4 * h)});
     }
-    EXPECT_GT(expect_copies_exact(a, rays, "grazing, centre.x " + std::to_string(centre.x)), 300);
+    EXPECT_GT(expect_copies_exact(a, rays, "grazing, centre.x " + std::to_string(centre.x)), 200);
   }
 }
 
 // Rays from inside the box through its grid lines and grid points, whose triangles' boxes have a
-// face on the ray's path at the hit: every lane gets its ray's answer, and every ray hits.
+// face on the ray's path at the hit: every lane gets its ray's answer, and with `watertight` every
+// ray hits.
 TEST_P(BvhPacketSlotCull, RaysThroughGridLinesAndPointsOfAClosedBoxMatchTheRayAlone) {
   for (const Vec3d centre : {Vec3d{0.2, -0.1, 0.3}, Vec3d{148376, 1234, -223423}}) {
     const double h = centre.x > 1000 ? 300.0 : 1.0;
@@ -173,12 +177,14 @@ TEST_P(BvhPacketSlotCull, RaysThroughGridLinesAndPointsOfAClosedBoxMatchTheRayAl
       rays.push_back(Ray{origin, Vec3f(Vec3d(target) - Vec3d(origin))});
     }
     const int hits = expect_copies_exact(a, rays, "grid lines, centre.x " + std::to_string(centre.x));
-    EXPECT_EQ(hits, int(rays.size()));
+    if (GetParam().intersector == Intersector::watertight) {
+      EXPECT_EQ(hits, int(rays.size()));
+    }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(AllIsasWidths, BvhPacketSlotCull,
-                         ::testing::ValuesIn(test::bvh_cases({Intersector::watertight})),
+                         ::testing::ValuesIn(test::bvh_cases({Intersector::mt, Intersector::watertight})),
                          test::bvh_case_name);
 
 }  // namespace
