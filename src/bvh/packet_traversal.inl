@@ -303,8 +303,9 @@ RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, 
       auto boxes = PK::template Forward<true>::load(rows, neg, bvh.box_epsilon);
       const PacketHull hull = boxes.hull(active);
       const pfloat d[3] = {pfloat::load(s.soa[3]), pfloat::load(s.soa[4]), pfloat::load(s.soa[5])};
-      PacketChildren<B, true> children{B::prepare_hull(hull), boxes.max_tmax(active),
-                                       slot_cull(bvh.packet_slot_cull, hull, hmax_lanes(m, active), d, active)};
+      PacketChildren<B, true> children{
+          B::prepare_hull(hull), boxes.max_tmax(active),
+          slot_cull(bvh.packet_slot_cull, hull, hmax_lanes(m, active), d, active)};
       traverse(boxes, children);
     } else {
       auto boxes = PK::template Forward<false>::load(rows, neg, bvh.box_epsilon);
