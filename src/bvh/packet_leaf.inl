@@ -108,7 +108,7 @@ RAYVEC_INLINE unsigned packet_leaf_finish(const TriangleArrays& T, unsigned foun
     const int32_t id = T.id[slot_offset(__builtin_bit_cast(uint32_t, ss[k]))];
     Hit& hit = hits[k];
     if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri))) {
-      hit = Hit{t, us[k], vs[k], id};
+      hit = Hit{t + 0.0f, us[k], vs[k], id};  // no −0, as mt_finish
       changed |= 1u << k;
       if (t < limit[k]) {
         limit[k] = t;
@@ -137,7 +137,10 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   const V neg_lo = zero - q.lo;
   // the exact tests and the update of one step that passed the pre-test
   auto step = [&](MtNumerators<V> c, uint32_t i) __attribute__((always_inline)) {
-    c.mask = active & mt_edges(c) & (c.tn < hi * c.adet);
+    // no `tn < hi·|det|` here: the pre-test's sign form already holds that, and hi·|det| underflows
+    // to 0 once a lane's nearest hit is at t = 0, which would drop a tie there that the single-ray
+    // kernel's exact test takes
+    c.mask = active & mt_edges(c);
     if constexpr (TminZero)
       c.mask = c.mask & (c.tn >= zero);
     else

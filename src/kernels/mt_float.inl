@@ -297,8 +297,10 @@ RAYVEC_INLINE void mt_finish(const TriangleArrays& T, const MtBest<V>& b, float 
     if (T.id[slot_offset(uint32_t(idx[k]))] < T.id[slot_offset(uint32_t(idx[k_best]))]) k_best = k;
   }
   const int32_t id = T.id[slot_offset(uint32_t(idx[k_best]))];
+  // t + 0: of lanes tied at t = ±0, hmin returns either sign; +0 always, so every layout (lanes,
+  // ray packets) reports the same bits. 0 − un: no −0 either.
   if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri)))
-    hit = Hit{t, (0.0f - us[k_best]) / as[k_best], vs[k_best] / as[k_best], id};  // 0 − un: no −0
+    hit = Hit{t + 0.0f, (0.0f - us[k_best]) / as[k_best], vs[k_best] / as[k_best], id};
 }
 
 // One ray's constants and running best.
@@ -392,7 +394,7 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
   if (!(best < initial)) return;
   const int32_t id = T.id[slot_offset(winner)];
   if (best < hit.t || (best == hit.t && (hit.tri < 0 || id < hit.tri)))
-    hit = Hit{best, (0.0f - un) / adet, vn / adet, id};  // 0 − un: no −0
+    hit = Hit{best + 0.0f, (0.0f - un) / adet, vn / adet, id};  // as mt_finish: no −0
 }
 
 // tmin = 0 (camera and most secondary rays) drops the multiply of the lower depth pre-test.

@@ -145,12 +145,10 @@ TEST_P(BvhPacketSlotCull, GrazingRaysLeavingAFaceMatchTheRayAlone) {
       dd[pv] = d[1];
       dd[axis] = -side * angle * std::hypot(d[0], d[1]);  // into the box
       const Vec3f dir{float(dd[0]), float(dd[1]), float(dd[2])};
-      // Float `mt` packets disagree with single rays, with or without the cull, on which of two
-      // triangles that both hold the origin a tmin = 0 ray reports at t = ±0: left out for `mt`.
-      if (GetParam().intersector != Intersector::mt) rays.push_back(Ray{origin, dir});
+      rays.push_back(Ray{origin, dir});  // on a grid line: two triangles tie at t = 0
       rays.push_back(Ray{origin, dir, float(1e-4 * h)});
     }
-    EXPECT_GT(expect_copies_exact(a, rays, "grazing, centre.x " + std::to_string(centre.x)), 200);
+    EXPECT_GT(expect_copies_exact(a, rays, "grazing, centre.x " + std::to_string(centre.x)), 300);
   }
 }
 
