@@ -46,7 +46,7 @@ struct MtFloat {
     if (!(un <= 0.0f && vn >= 0.0f && vn - un <= adet && adet > 0.0f)) return false;
     // depth test
     const float tn = flip(madd<Fused>(sx, ngx, madd<Fused>(sy, ngy, sz * ngz)), sign);
-    t = tn / adet;
+    t = tn / adet + 0.0f;  // + 0: no −0, as the CPU kernels report a hit at t = 0
     if (!(t >= r.tmin && t < tlimit)) return false;
     u = (0.0f - un) / adet;  // 0 − un: no −0
     v = vn / adet;
