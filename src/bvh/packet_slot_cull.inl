@@ -26,12 +26,13 @@
 //   last place.
 // - `mt`'s numerators (u, v: triple products of v0 − o, d and an edge) carry errors of a few units
 //   in the last place of |v − o|·|d|·|e|; as a ray offset that is divided by the sine of the angle
-//   between d and the edge, which is at least the sine of the angle between d and the triangle's
-//   plane, and det's error scales the third edge the same way. So a triangle that some direction of
-//   the packet's direction box (per axis the lanes' extremes) meets at a sine below kGraze = 2^-6
-//   is always stepped (interval arithmetic on d·n), and the others' boxes are widened by 2^-10·s:
-//   at least 2^-10 / (2·√3) of |v − o|, 4,700 units in the last place, 74 after the grazing factor
-//   of 64.
+//   between d and the edge, which is at least the sine of the angle φ between d and the triangle's
+//   plane, and det's error scales the third edge the same way. So a triangle is always stepped
+//   unless sin φ >= kGraze = 2^-6 for every lane: tested as sin φ0 >= kGraze + sin θ, φ0 the angle
+//   of the packet's first direction d0 and θ the widest angle between d0 and a lane's direction
+//   (then φ >= φ0 − θ >= asin(kGraze), asin being superadditive), on the stored normals where the
+//   tree has them; the others' boxes are widened by 2^-10·s: at least 2^-10 / (2·√3) of |v − o|,
+//   4,700 units in the last place, 74 after the grazing factor of 64.
 // So every triangle the kernel could report for some lane is stepped, in slot order as before: the
 // same ids, t, u, v bit for bit (tests/bvh/bvh_packet_slot_cull_test.cpp). Packets that are not
 // uniform and forward (no hull) step every slot.
@@ -69,16 +70,16 @@ inline constexpr float kGraze = 0x1p-6f;
 // triangle boxes are widened by.
 struct SlotCull {
   BoxHull<vfloat> hull;
-  bool on;                // BvhArrays::packet_slot_cull: else every slot
-  float margin;           // watertight
-  float margin_mt;        // mt
-  vfloat dlo[3], dhi[3];  // mt: per axis the smallest and largest direction component of the lanes
-  vfloat graze2;          // mt: kGraze² · the largest |d|² of the lanes
+  bool on;          // BvhArrays::packet_slot_cull: else every slot
+  float margin;     // watertight
+  float margin_mt;  // mt
+  vfloat d0[3];     // mt: the direction of the packet's first lane
+  vfloat graze2;    // mt: (kGraze + sin θ)²·|d0|², θ the widest angle between d0 and a lane's direction
 
   // The slots of [begin, end) whose triangle box, widened by the margin, the hull enters, in
   // leaf_slot_bits' layout. The boxes are formed from the triangle rows a block at a time, laid out
   // as a 16-wide node's child boxes; padding slots (zero area) may pass or not: no kernel reports them.
-  // Mt: also every triangle that some direction of the packet's direction box meets at a sine below kGraze.
+  // Mt: also every triangle that a lane's direction may meet at a sine below kGraze (see above).
   template <bool Mt>
   RAYVEC_INLINE uint64_t slots(const TriangleArrays& T, uint32_t begin, uint32_t end) const {
     if (!on) return leaf_slot_bits(begin, end);
@@ -101,19 +102,19 @@ struct SlotCull {
           e2[a] = v2 - v0;
         }
         if constexpr (Mt) {
-          const vfloat n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                               e1[0] * e2[1] - e1[1] * e2[0]};
-          vfloat lo = vfloat::broadcast(0.0f), hi = lo, n2 = lo;
-          for (int a = 0; a < 3; ++a) {
-            const vfloat p = n[a] * dlo[a], q = n[a] * dhi[a];
-            lo = lo + vmin(p, q);
-            hi = hi + vmax(p, q);
-            n2 = fmadd(n[a], n[a], n2);
+          vfloat n[3];
+          if (T.ng) {  // the stored normals (small meshes mostly have them)
+            const float* ng = T.ng + normal_offset(b) + j;
+            for (uint32_t a = 0; a < 3; ++a) n[a] = vfloat::load(ng + a * kSlotBlock);
+          } else {
+            n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+            n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+            n[2] = e1[0] * e2[1] - e1[1] * e2[0];
           }
-          const vfloat g = vmax(lo, vfloat::broadcast(0.0f) - hi);  // > 0: d·n keeps its sign
-          // not grazed where g > 0 and g² >= kGraze²·|d|²·|n|² (NaN: grazed)
-          grazed |= (~bits((g > vfloat::broadcast(0.0f)) & (g * g >= graze2 * n2)) & ((1u << vfloat::W) - 1u))
-                    << j;
+          const vfloat dn = fmadd(d0[0], n[0], fmadd(d0[1], n[1], d0[2] * n[2]));
+          const vfloat n2 = fmadd(n[0], n[0], fmadd(n[1], n[1], n[2] * n[2]));
+          // not grazed where (d0·n)² >= (kGraze + sin θ)²·|d0|²·|n|² (NaN: grazed)
+          grazed |= (~bits(dn * dn >= graze2 * n2) & ((1u << vfloat::W) - 1u)) << j;
         }
       }
       found |= uint64_t(BoxLanes16::hits_hull(box, hull, __builtin_inff()) | grazed) << (b - first);
@@ -131,14 +132,21 @@ RAYVEC_INLINE SlotCull slot_cull(bool on, PacketHull h, float s, const pfloat d[
   c.hull = BoxLanes16::prepare_hull(h);
   c.margin = s * 0x1p-14f;
   c.margin_mt = s * 0x1p-10f;
-  float d2 = 0.0f;
-  for (int a = 0; a < 3; ++a) {
-    const float lo = hmin_lanes(d[a], active), hi = hmax_lanes(d[a], active);
-    c.dlo[a] = vfloat::broadcast(lo);
-    c.dhi[a] = vfloat::broadcast(hi);
-    const float big = -lo > hi ? -lo : hi;  // the largest |d[a]|
-    d2 += big * big;
-  }
-  c.graze2 = vfloat::broadcast(d2 * (kGraze * kGraze));
+  // sin² of each lane's angle to d0: |d × d0|² / (|d|²·|d0|²)
+  alignas(64) float rows[3][pfloat::W];
+  for (int a = 0; a < 3; ++a) d[a].store(rows[a]);
+  const int k0 = __builtin_ctz(active);
+  const float x = rows[0][k0], y = rows[1][k0], z = rows[2][k0];
+  const pfloat bx = pfloat::broadcast(x), by = pfloat::broadcast(y), bz = pfloat::broadcast(z);
+  const pfloat cx = d[1] * bz - d[2] * by, cy = d[2] * bx - d[0] * bz, cz = d[0] * by - d[1] * bx;
+  const float d02 = x * x + y * y + z * z;
+  const pfloat sin2 =
+      (cx * cx + cy * cy + cz * cz) / ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * pfloat::broadcast(d02));
+  const float sin_widest = __builtin_sqrtf(hmax_lanes(sin2, active)) * (1.0f + 0x1p-10f);  // rounded up
+  const float limit = kGraze + sin_widest;
+  c.d0[0] = vfloat::broadcast(x);
+  c.d0[1] = vfloat::broadcast(y);
+  c.d0[2] = vfloat::broadcast(z);
+  c.graze2 = vfloat::broadcast(limit * limit * d02);
   return c;
 }
