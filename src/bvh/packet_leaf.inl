@@ -137,9 +137,9 @@ unsigned mt_packet_closest(const TriangleArrays& T, uint32_t begin, uint32_t end
   const V neg_lo = zero - q.lo;
   // the exact tests and the update of one step that passed the pre-test
   auto step = [&](MtNumerators<V> c, uint32_t i) __attribute__((always_inline)) {
-    // no `tn < hi·|det|` here: the pre-test's sign form already holds that, and hi·|det| underflows
-    // to 0 once a lane's nearest hit is at t = 0, which would drop a tie there that the single-ray
-    // kernel's exact test takes
+    // no `tn < hi·|det|` here (the pre-test's sign form has filtered on it; the exact t < best_t
+    // below decides): hi·|det| underflows to 0 once a lane's nearest hit is at t = 0, and would drop
+    // a tie there that the single-ray kernel's exact test takes
     c.mask = active & mt_edges(c);
     if constexpr (TminZero)
       c.mask = c.mask & (c.tn >= zero);
@@ -198,13 +198,12 @@ RAYVEC_INLINE unsigned packet_filter_accepts(const TriangleArrays& T, uint32_t i
 }
 
 // The slots set in `slots` (of [begin, end)) against the lanes set in `lanes`: the lanes that hit one
-// of them with
-// tmin <= t <= tmax and whose filter (filters: null or one per lane) accepts it. `q`: the packet's
-// rays as lanes with, per lane, the single-ray kernel's constants (mt_any_hit_ray's lo, hi,
-// tlimit). Per lane and triangle the single-ray kernel's test, mt_any_hit_lanes, on the numerators
-// mt_packet_closest forms, behind the conservative sign pre-test, so a lane is occluded here exactly
-// when the single-ray kernel finds its ray occluded in the same range (outside subnormal |det|,
-// mt_packet_closest's caveat). A lane leaves the loop at its first hit.
+// of them with tmin <= t <= tmax and whose filter (filters: null or one per lane) accepts it. `q`: the
+// packet's rays as lanes with, per lane, the single-ray kernel's constants (mt_any_hit_ray's lo, hi, tlimit).
+// Per lane and triangle the single-ray kernel's test, mt_any_hit_lanes, on the numerators mt_packet_closest
+// forms, behind the conservative sign pre-test, so a lane is occluded here exactly when the single-ray kernel
+// finds its ray occluded in the same range (outside subnormal |det|, mt_packet_closest's caveat). A lane
+// leaves the loop at its first hit.
 template <class V>
 unsigned mt_packet_occluded(const TriangleArrays& T, uint32_t begin, uint32_t end, uint64_t slots,
                             const MtAnyHitRay<V>& q, unsigned lanes, const HitFilter* filters) {

@@ -107,8 +107,9 @@ RAYVEC_INLINE void prefetch_ref(const WideNode<N>* nodes, const TriangleArrays& 
 // every child against the whole packet (B::hits_hull) instead of one test a child. A camera packet
 // enters few of a wide node's children, so this skips most of the per-child tests
 // (benchmarks.md#decision-hull-pretest). It only filters: a child it passes is tested lane by lane
-// as before, so the results are unchanged bit for bit. slots(): the slots of a leaf the `watertight`
-// packet kernels step — all of them, or with a hull those SlotCull keeps (packet_slot_cull.inl).
+// as before, so the results are unchanged bit for bit. slots<Mt>(): the slots of a leaf the packet
+// kernels step — all of them, or with a hull those SlotCull keeps (packet_slot_cull.inl; Mt: the
+// `mt` kernels' rule).
 template <class B, bool WithHull>
 struct PacketChildren;
 template <class B>
