@@ -28,9 +28,10 @@ enum class Intersector {
   // except for rounding (not guaranteed watertight). Computed over the normal ng = e2 × e1
   // (det = d·ng, t·det = (v0 − o)·ng), stored with the triangles or formed per step by the same
   // float operations (the same bits either way); t = (t·det)/det by one correctly rounded
-  // division, accepted when tmin <= t <= tmax. Every comparison is ordered: a NaN or Inf-derived NaN anywhere
-  // fails it, so NaN input never produces a hit and never produces a NaN output. Degenerate
-  // (zero-area) triangles have det = 0 and never hit.
+  // division, accepted when tmin <= t <= tmax, reported without a sign on zero (a hit at t = 0 is
+  // +0). Every comparison is ordered: a NaN or Inf-derived NaN anywhere fails it, so NaN input never
+  // produces a hit and never produces a NaN output. Degenerate (zero-area) triangles have det = 0
+  // and never hit.
   mt,
 
   // The `mt` contract evaluated in double: float vertices converted exactly, edges computed in double
