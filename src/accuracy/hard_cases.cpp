@@ -148,20 +148,25 @@ void add_rays_at_triangles(HardCaseFamily& f, int n, double origin_distance, Rng
   }
 }
 
-// The closed box [−1, 1]^3 with each face split into 4×4 quads (two triangles each), vertices on a
-// 0.5 grid: exactly representable, so axis-parallel rays can pass exactly through vertices and edges.
-TriangleMesh grid_box() {
+}  // namespace
+
+// grid_box({0, 0, 0}, 1, 4) puts the vertices on a 0.5 grid, exactly representable, so axis-parallel
+// rays can pass exactly through vertices and edges.
+TriangleMesh grid_box(Vec3d centre, double half, int n) {
   TriangleMesh m;
   std::map<std::array<int, 3>, uint32_t> index;
   auto vertex = [&](std::array<int, 3> g) {
     auto [it, fresh] = index.try_emplace(g, uint32_t(m.positions.size()));
-    if (fresh) m.positions.push_back({-1 + 0.5f * g[0], -1 + 0.5f * g[1], -1 + 0.5f * g[2]});
+    if (fresh) {
+      const auto coord = [&](int a) { return centre[a] + half * (-1.0 + 2.0 * g[std::size_t(a)] / n); };
+      m.positions.push_back(Vec3f(Vec3d{coord(0), coord(1), coord(2)}));
+    }
     return it->second;
   };
   for (int axis = 0; axis < 3; ++axis)
-    for (int side : {0, 4})
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) {
+    for (int side : {0, n})
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
           auto at = [&](int a, int b) {
             std::array<int, 3> g{};
             g[axis] = side;
@@ -180,8 +185,6 @@ TriangleMesh grid_box() {
         }
   return m;
 }
-
-}  // namespace
 
 TriangleMesh make_octahedron(Vec3d centre, double radius, uint64_t rotate_seed) {
   const std::vector<Vec3d> p = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
@@ -341,7 +344,7 @@ std::vector<HardCaseFamily> hard_case_families(uint64_t seed, int scale) {
     HardCaseFamily f{"axis_parallel_grid",
                      "axis-parallel rays and rays with zero direction components through grid "
                      "vertices, edges and diagonals of a closed box",
-                     grid_box(),
+                     grid_box({0, 0, 0}, 1.0, 4),
                      {},
                      true,
                      false};

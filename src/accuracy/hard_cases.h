@@ -34,5 +34,9 @@ HardCaseFamily random_control_family(uint64_t seed, int scale);
 // triangles, and a closed octahedron, each around `centre`, randomly rotated when rotate_seed != 0.
 TriangleMesh make_icosphere(Vec3d centre, double radius, int subdivisions, uint64_t rotate_seed);
 TriangleMesh make_octahedron(Vec3d centre, double radius, uint64_t rotate_seed);
+// The closed box centre ± half whose faces are n × n grids of axis-aligned squares, two triangles
+// each (diagonals alternating), vertices shared: the axis_parallel_grid family's mesh is
+// grid_box({0, 0, 0}, 1, 4).
+TriangleMesh grid_box(Vec3d centre, double half, int n);
 
 }  // namespace rayvec

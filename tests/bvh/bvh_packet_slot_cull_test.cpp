@@ -79,33 +79,6 @@ int expect_copies_exact(const BvhAccelerator& a, const std::vector<Ray>& rays, c
   return hit;
 }
 
-// A closed box [c − h, c + h] whose six faces are n × n grids of axis-aligned squares, each cut
-// into two triangles, the vertices shared.
-TriangleMesh grid_box(Vec3d c, double h, int n) {
-  TriangleMesh mesh;
-  for (int axis = 0; axis < 3; ++axis)
-    for (const double side : {-1.0, 1.0}) {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      const auto first = uint32_t(mesh.positions.size());
-      for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) {
-          double p[3];
-          p[axis] = side;
-          p[u] = -1.0 + 2.0 * i / n;
-          p[v] = -1.0 + 2.0 * j / n;
-          mesh.positions.push_back(Vec3f(c + Vec3d{p[0], p[1], p[2]} * h));
-        }
-      auto at = [&](int i, int j) { return first + uint32_t(j * (n + 1) + i); };
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          const bool outward = side > 0;  // the winding does not matter to the intersectors
-          mesh.triangles.push_back({at(i, j), outward ? at(i + 1, j) : at(i, j + 1), at(i + 1, j + 1)});
-          mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), outward ? at(i, j + 1) : at(i + 1, j)});
-        }
-    }
-  return mesh;
-}
-
 TEST_P(BvhPacketSlotCull, SixteenCopiesOfEachHardCaseRayMatchTheRayAlone) {
   int families = 0;
   for (const HardCaseFamily& f : hard_case_families(11, 1)) {
