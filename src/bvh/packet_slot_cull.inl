@@ -91,28 +91,22 @@ struct SlotCull {
       alignas(64) float box[6][kSlotBlock];  // lo x, y, z, hi x, y, z
       unsigned grazed = 0;
       for (uint32_t j = 0; j < kSlotBlock; j += vfloat::W) {
-        vfloat e1[3], e2[3];
+        vfloat v0[3], v1[3], v2[3];
         for (uint32_t a = 0; a < 3; ++a) {
-          const vfloat v0 = vfloat::load(block + (kRowV0 + a) * kSlotBlock + j);
-          const vfloat v1 = vfloat::load(block + (kRowV1 + a) * kSlotBlock + j);
-          const vfloat v2 = vfloat::load(block + (kRowV2 + a) * kSlotBlock + j);
-          (vmin(vmin(v0, v1), v2) - m).store(box[a] + j);
-          (vmax(vmax(v0, v1), v2) + m).store(box[3 + a] + j);
-          e1[a] = v1 - v0;
-          e2[a] = v2 - v0;
+          v0[a] = vfloat::load(block + (kRowV0 + a) * kSlotBlock + j);
+          v1[a] = vfloat::load(block + (kRowV1 + a) * kSlotBlock + j);
+          v2[a] = vfloat::load(block + (kRowV2 + a) * kSlotBlock + j);
+          (vmin(vmin(v0[a], v1[a]), v2[a]) - m).store(box[a] + j);
+          (vmax(vmax(v0[a], v1[a]), v2[a]) + m).store(box[3 + a] + j);
         }
         if constexpr (Mt) {
-          vfloat n[3];
-          if (T.ng) {  // the stored normals (small meshes mostly have them)
-            const float* ng = T.ng + normal_offset(b) + j;
-            for (uint32_t a = 0; a < 3; ++a) n[a] = vfloat::load(ng + a * kSlotBlock);
-          } else {
-            n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-            n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-            n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-          }
-          const vfloat dn = fmadd(d0[0], n[0], fmadd(d0[1], n[1], d0[2] * n[2]));
-          const vfloat n2 = fmadd(n[0], n[0], fmadd(n[1], n[1], n[2] * n[2]));
+          const float* ng = T.ng ? T.ng + normal_offset(b) + j : nullptr;  // stored: small meshes mostly
+          const MtNormal<vfloat> n = ng ? MtNormal<vfloat>{vfloat::load(ng), vfloat::load(ng + kSlotBlock),
+                                                           vfloat::load(ng + 2 * kSlotBlock)}
+                                        : mt_normal(v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2],
+                                                    v2[0] - v0[0], v2[1] - v0[1], v2[2] - v0[2]);
+          const vfloat dn = fmadd(d0[0], n.x, fmadd(d0[1], n.y, d0[2] * n.z));
+          const vfloat n2 = fmadd(n.x, n.x, fmadd(n.y, n.y, n.z * n.z));
           // not grazed where (d0·n)² >= (kGraze + sin θ)²·|d0|²·|n|² (NaN: grazed)
           grazed |= (~bits(dn * dn >= graze2 * n2) & ((1u << vfloat::W) - 1u)) << j;
         }
