@@ -17,12 +17,10 @@ bool traceable(const Ray& r) {
          !std::isnan(r.tmax);
 }
 
-// Whether the traversals call the leaf kernel directly: only the float mt and watertight kernels
-// have a direct form.
-bool direct_leaf(const TraceConfig& config, const BvhOptions& options) {
-  if (config.intersector != Intersector::mt && config.intersector != Intersector::watertight) return false;
-  if (options.direct_leaf < 0) return default_direct_leaf(config.isa, config.intersector);
-  return options.direct_leaf != 0;
+// How the traversals reach the leaf kernel: BvhOptions::leaf_call, or by default default_leaf_call.
+LeafCall leaf_call(const TraceConfig& config, const BvhOptions& options, std::size_t triangles) {
+  if (options.leaf_call < 0) return default_leaf_call(config.isa, config.intersector, triangles);
+  return LeafCall(options.leaf_call);
 }
 
 }  // namespace
@@ -41,7 +39,7 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
       kernels_(&triangle_kernels(config.isa, config.intersector)),
       traversal_(&bvh_traversal(config.isa,
                                 options.width ? options.width : default_bvh_width(config.isa, mesh.size()),
-                                direct_leaf(config, options), config.intersector)) {
+                                leaf_call(config, options, mesh.size()), config.intersector)) {
   SahConfig sah = options.sah;
   if (options.leaves_from_kernel && kernels_->width >= 8) {
     sah.leaf_block = uint32_t(kernels_->width);

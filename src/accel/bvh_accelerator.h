@@ -25,10 +25,10 @@ struct BvhOptions {
   // (benchmarks.md#decision-merged-leaves).
   int merge_steps = 3;
   float box_epsilon = kDefaultBoxEpsilon;  // relative widening of ray-box intervals, > 0
-  // The traversals call the float `mt` or `watertight` leaf kernel directly (1) or through the
-  // kernel table (0); −1 = default_direct_leaf(isa, intersector). Other
-  // intersectors always use the table. Same results either way.
-  int direct_leaf = -1;
+  // How the traversals reach the leaf kernel: a LeafCall as an int (0 table, 1 direct, 2 inlined),
+  // or −1 = default_leaf_call(isa, intersector, triangles). Where the ISA and intersector have no
+  // such leaf, the nearest they have (bvh_traversal). Same results every way.
+  int leaf_call = -1;
   // Whether the triangle rows store the normals the float `mt` kernels read (12 bytes a slot) or
   // leave the kernels to form them per step: −1 = bvh_normals' default, 1 = stored for `mt`, 0 =
   // never stored. No other intersector reads them. Same hits either way.

@@ -26,13 +26,31 @@
 namespace rayvec {
 namespace {
 
+const char* leaf_call_name(LeafCall call) {
+  switch (call) {
+    case LeafCall::direct: return "direct";
+    case LeafCall::inlined: return "inlined";
+    case LeafCall::table: break;
+  }
+  return "table";
+}
+
+const char* leaf_call_words(LeafCall call) {
+  switch (call) {
+    case LeafCall::direct: return "called directly";
+    case LeafCall::inlined: return "inlined";
+    case LeafCall::table: break;
+  }
+  return "through the kernel table";
+}
+
 struct Options {
   std::string model, size = "1024x1024";
   TraceOptions trace;
   bool json = false, vs_embree = false;
   int repeats = 5, width = 0;
   int max_leaf = 0, leaf_block = 0;  // 0: the builder's defaults
-  int direct_leaf = -1;              // -1: default_direct_leaf
+  int leaf_call = -1;                // -1: default_leaf_call, else a LeafCall
   int merge_steps = BvhOptions{}.merge_steps;
   int builds = 3;  // builds timed; the median is reported
   double split_budget = SahConfig{}.split_budget;
@@ -142,8 +160,8 @@ int run(const Options& o) {
     bvh_options.sah.max_leaf = uint32_t(o.max_leaf);
     bvh_options.leaves_from_kernel = false;
   }
-  if (o.direct_leaf < -1 || o.direct_leaf > 1) throw InputError("--direct-leaf: must be -1, 0 or 1");
-  bvh_options.direct_leaf = o.direct_leaf;
+  if (o.leaf_call < -1 || o.leaf_call > 2) throw InputError("--direct-leaf: must be -1, 0, 1 or 2");
+  bvh_options.leaf_call = o.leaf_call;
   if (o.merge_steps < 0 || o.merge_steps > int(kMaxLeafTriangles))
     throw InputError("--merge-steps: must be 0 to " + std::to_string(kMaxLeafTriangles));
   bvh_options.merge_steps = o.merge_steps;
@@ -208,14 +226,16 @@ int run(const Options& o) {
   if (o.json) {
     std::printf(
         "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
-        "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,\"merge_steps\":%"
-        "d,\"split_budget\":%.3f,\"references_per_tri\":%.4f,\"stored_normals\":%s,"
+        "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,\"leaf_call\":\"%"
+        "s\","
+        "\"merge_steps\":%d,\"split_budget\":%.3f,\"references_per_tri\":%.4f,\"stored_normals\":%s,"
         "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
         "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
         json_string(o.model).c_str(), mesh.size(), width, height, json_string(cpu_features().brand).c_str(),
         json_string(isa_name(config.isa)).c_str(), json_string(intersector_name(config.intersector)).c_str(),
         threads, bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
-        bvh->traversal().direct_leaf ? "true" : "false", o.merge_steps, double(split_budget), refs_per_tri,
+        bvh->traversal().leaf_call != LeafCall::table ? "true" : "false",
+        leaf_call_name(bvh->traversal().leaf_call), o.merge_steps, double(split_budget), refs_per_tri,
         bvh->triangles().stores_normals() ? "true" : "false", o.builds, build_s,
         json_array(build_runs).c_str(), bytes_per_tri, fma.avx2, fma.avx512);
     print_sets_json(run);
@@ -250,8 +270,7 @@ int run(const Options& o) {
       "(spatial-split budget %.2f), depth %u, leaf kernel %s, normals %s; build %.4f s; %.1f bytes/triangle "
       "(nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), o.merge_steps, refs_per_tri,
-      double(split_budget), bvh->tree().depth(),
-      bvh->traversal().direct_leaf ? "called directly" : "through the kernel table",
+      double(split_budget), bvh->tree().depth(), leaf_call_words(bvh->traversal().leaf_call),
       bvh->triangles().stores_normals() ? "stored" : "formed per step", build_s, bytes_per_tri,
       double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
   if (o.vs_embree)
@@ -315,9 +334,11 @@ void register_bench_rays_command(Command& bench) {
               "step (0); -1 = default (stored below " +
                   std::to_string(kFormedNormalsFrom) + " triangles while the BVH stays within " +
                   std::to_string(int(kBvhBytesPerTriangle)) + " bytes a triangle)")
-      .option("--direct-leaf", o.direct_leaf,
-              "tuning: closest-hit traversal calls the mt leaf kernel directly (1) or through the "
-              "kernel table (0); -1 = default (directly on AVX2 and AVX-512)");
+      .option("--direct-leaf", o.leaf_call,
+              "tuning: how the traversals reach the mt or watertight leaf kernel: through the kernel "
+              "table (0), called directly (1), mt's closest-hit kernel inlined into the traversal (2); "
+              "-1 = default (directly on AVX2 and AVX-512, mt inlined from " +
+                  std::to_string(kWideNodeTriangles) + " triangles up)");
   add_trace_options(cmd, o.trace, false);
   cmd.footer(
       "Ray sets (exact definitions in src/bench/ray_sets.h): primary = a pinhole camera framing the\n"

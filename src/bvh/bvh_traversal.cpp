@@ -29,21 +29,20 @@ int default_leaf_steps(Isa isa, std::size_t triangles) {
   return isa != Isa::scalar && triangles < kWideNodeTriangles ? 1 : 2;
 }
 
-bool default_direct_leaf(Isa isa, Intersector intersector) {
-  return isa != Isa::scalar && (intersector == Intersector::mt || intersector == Intersector::watertight);
+LeafCall default_leaf_call(Isa isa, Intersector intersector, std::size_t triangles) {
+  if (isa == Isa::scalar) return LeafCall::table;
+  if (intersector == Intersector::mt)
+    return triangles >= kWideNodeTriangles ? LeafCall::inlined : LeafCall::direct;
+  return intersector == Intersector::watertight ? LeafCall::direct : LeafCall::table;
 }
 
-const BvhTraversal& bvh_traversal(Isa isa, int width, Intersector intersector) {
-  return bvh_traversal(isa, width, default_direct_leaf(isa, intersector), intersector);
-}
-
-const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf, Intersector intersector) {
+const BvhTraversal& bvh_traversal(Isa isa, int width, LeafCall call, Intersector intersector) {
   if (!isa_supported(isa)) throw std::runtime_error(std::string("this CPU cannot run ISA ") + isa_name(isa));
   const BvhTraversal* k = nullptr;
   switch (isa) {
-    case Isa::avx512: k = avx512::bvh_traversal(width, direct_leaf, intersector); break;
-    case Isa::avx2: k = avx2::bvh_traversal(width, direct_leaf, intersector); break;
-    case Isa::scalar: k = scalar::bvh_traversal(width, direct_leaf, intersector); break;
+    case Isa::avx512: k = avx512::bvh_traversal(width, call, intersector); break;
+    case Isa::avx2: k = avx2::bvh_traversal(width, call, intersector); break;
+    case Isa::scalar: k = scalar::bvh_traversal(width, call, intersector); break;
   }
   if (!k)
     throw std::invalid_argument("no " + std::to_string(width) + "-wide BVH traversal for ISA " +

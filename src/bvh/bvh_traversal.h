@@ -9,6 +9,14 @@
 
 namespace rayvec {
 
+// How the single-ray traversals reach the leaf kernel (benchmarks.md#decision-direct-leaf-call,
+// #decision-inlined-leaf). Same results every way.
+enum class LeafCall {
+  table,    // through the kernel table: every intersector
+  direct,   // the ISA's float `mt` or `watertight` kernel called directly, out of line
+  inlined,  // `mt`'s closest-hit kernel inlined into the traversal loop; otherwise as direct
+};
+
 struct BvhTraversal {
   Isa isa;
   int width;  // children per node this table traverses
@@ -35,10 +43,11 @@ struct BvhTraversal {
                               const TriangleKernels& kernels, const Ray* rays, unsigned active,
                               const HitFilter* filters, bool ordered);
   int packet_width;  // rays per packet (16 on AVX-512 and AVX2, 0 none)
-  // The leaves call a float kernel of this ISA directly instead of through the kernel table
-  // (default_direct_leaf): `mt` in closest() (on AVX2 also in occluded()), `watertight` in both.
-  // AVX-512's occluded() calls its float `mt` kernel directly whatever this says.
-  bool direct_leaf = false;
+  // How the leaves reach the kernel (default_leaf_call): other than `table`, a float kernel of this
+  // ISA directly — `mt` in closest() (on AVX2 also in occluded()), `watertight` in both; `inlined`:
+  // `mt`'s closest() kernel inlined. AVX-512's occluded() calls its float `mt` kernel directly
+  // whatever this says.
+  LeafCall leaf_call = LeafCall::table;
 };
 
 // The node widths an ISA has traversal code for.
@@ -63,32 +72,33 @@ int default_bvh_width(Isa isa, std::size_t triangles);
 // two otherwise — large meshes lost or broke even with one (benchmarks.md#decision-leaf-size).
 int default_leaf_steps(Isa isa, std::size_t triangles);
 
-// Whether the traversals call the float leaf kernel of `intersector` directly instead of through
-// the kernel table. `mt`: on AVX2 and AVX-512, where the closest-hit traversal then keeps its ray
-// registers instead of saving and reloading them around every leaf call (single rays faster on
-// Intel and AMD alike: benchmarks.md#decision-direct-leaf-call). On AVX2 the any-hit traversal then calls its
-// leaf kernel directly too, with the ray's lanes formed once per ray
-// (benchmarks.md#decision-any-hit-leaf-lanes); AVX-512's any-hit traversal always does. `watertight`: on AVX2
-// and AVX-512, both traversals, the ray's shear formed once per ray (bvh/watertight_leaf.inl;
-// benchmarks.md#decision-watertight-leaf). Other intersectors and the scalar ISA: the table. Same results
-// either way.
-bool default_direct_leaf(Isa isa, Intersector intersector = Intersector::mt);
+// How the traversals reach the leaf kernel of `intersector` in a BVH over `triangles` triangles.
+// `mt` and `watertight` on AVX2 and AVX-512: the float kernel directly, where the closest-hit
+// traversal then keeps its ray registers instead of saving and reloading them around every leaf call
+// (single rays faster on Intel and AMD alike: benchmarks.md#decision-direct-leaf-call); on AVX2 the
+// any-hit traversal then calls its leaf kernel directly too, with the ray's lanes formed once per ray
+// (benchmarks.md#decision-any-hit-leaf-lanes); AVX-512's any-hit traversal always does. `watertight`:
+// both traversals, the ray's shear formed once per ray (bvh/watertight_leaf.inl;
+// benchmarks.md#decision-watertight-leaf). `mt` from kWideNodeTriangles triangles up: the
+// closest-hit kernel inlined (large trees, whose rays visit leaves that are out of cache, gain
+// from a call without its saves and reloads; benchmarks.md#decision-inlined-leaf). Other
+// intersectors and the scalar ISA: the table. Same results every way.
+LeafCall default_leaf_call(Isa isa, Intersector intersector, std::size_t triangles);
 
-// The table for (isa, width), with the direct leaf calls of `intersector` where `direct_leaf` and
-// the ISA has them; the ISA must be supported and the width one of bvh_widths(isa). The form
-// without `direct_leaf` uses default_direct_leaf.
-const BvhTraversal& bvh_traversal(Isa isa, int width, bool direct_leaf,
+// The table for (isa, width) with `call`'s leaves where the ISA has them for `intersector` (else the
+// nearest it has: inlined → direct → table); the ISA must be supported and the width one of
+// bvh_widths(isa).
+const BvhTraversal& bvh_traversal(Isa isa, int width, LeafCall call,
                                   Intersector intersector = Intersector::mt);
-const BvhTraversal& bvh_traversal(Isa isa, int width, Intersector intersector = Intersector::mt);
 
 namespace scalar {
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector);
+const BvhTraversal* bvh_traversal(int width, LeafCall call, Intersector intersector);
 }
 namespace avx2 {
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector);
+const BvhTraversal* bvh_traversal(int width, LeafCall call, Intersector intersector);
 }
 namespace avx512 {
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector);
+const BvhTraversal* bvh_traversal(int width, LeafCall call, Intersector intersector);
 }
 
 }  // namespace rayvec

@@ -23,6 +23,7 @@ constexpr Isa kThisIsa = Isa::avx2;
 #include "bvh/watertight_leaf.inl"
 #include "bvh/mt_any_hit_leaf.inl"
 #include "bvh/packet_any_hit.inl"
+#include "bvh/mt_inlined_leaf.inl"
 
 namespace {
 // The traversals' leaves by this unit's float `mt` single-ray kernels, called directly (not through

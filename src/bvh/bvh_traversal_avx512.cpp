@@ -23,10 +23,11 @@ constexpr Isa kThisIsa = Isa::avx512;
 #include "bvh/watertight_leaf.inl"
 #include "bvh/mt_any_hit_leaf.inl"
 #include "bvh/packet_any_hit.inl"
+#include "bvh/mt_inlined_leaf.inl"
 
 namespace {
-// The closest-hit traversal's leaves by this unit's float `mt` kernel, called directly (inlined:
-// no call through the table, so the traversal's ray registers are not saved around it) when the
+// The closest-hit traversal's leaves by this unit's float `mt` kernel, called directly (not
+// through the table, around whose indirect call the traversal's ray registers are saved) when the
 // table is that kernel's; other tables through the table. The rays reaching a leaf are finite
 // (bvh.cpp rejects the others), so skipping the table entry's finite_ray test changes nothing.
 // Any hit: MtAnyHitLeaf (bvh/mt_any_hit_leaf.inl) in every table, whatever the closest-hit choice

@@ -17,7 +17,7 @@ constinit const BvhTraversal k8{Isa::scalar, 8, &bvh_closest<BoxLanes8>, &bvh_oc
                                 nullptr,     0};
 }  // namespace
 
-const BvhTraversal* bvh_traversal(int width, bool /*direct_leaf: none on the scalar ISA*/, Intersector) {
+const BvhTraversal* bvh_traversal(int width, LeafCall /*none but the table on the scalar ISA*/, Intersector) {
   switch (width) {
     case 4: return &k4;
     case 8: return &k8;

@@ -1,15 +1,15 @@
 // The BvhTraversal tables of a SIMD ISA unit and the choice among them, written once: included by
 // bvh_traversal_avx2.cpp and bvh_traversal_avx512.cpp inside their namespace, after the traversals
-// and the unit's leaf policies — kThisIsa, PacketLanes16, DirectMtLeaf (the float `mt` kernels
-// called directly) and TableAnyHitLeaf (the any-hit leaf of the tables that call the closest-hit
-// kernel through the table: the table itself, or where the unit measured it faster, its direct
-// any-hit kernel). Per node width: the table's leaves, the direct `mt` leaves, the direct
-// `watertight` leaves (bvh/watertight_leaf.inl).
+// and the unit's leaf policies — kThisIsa, PacketLanes16, DirectMtLeaf and InlinedMtLeaf (the float
+// `mt` kernels called directly, out of line or inlined) and TableAnyHitLeaf (the any-hit leaf of
+// the tables that call the closest-hit kernel through the table: the table itself, or where the
+// unit measured it faster, its direct any-hit kernel). Per node width: the table's leaves, the
+// direct `mt` leaves called and inlined, the direct `watertight` leaves (bvh/watertight_leaf.inl).
 
 namespace {
 
 template <class B, class ClosestLeaf, class AnyHitLeaf>
-constexpr BvhTraversal traversal_table(int width, bool direct_leaf) {
+constexpr BvhTraversal traversal_table(int width, LeafCall call) {
   return {kThisIsa,
           width,
           &bvh_closest<B, ClosestLeaf>,
@@ -17,26 +17,38 @@ constexpr BvhTraversal traversal_table(int width, bool direct_leaf) {
           &bvh_closest_packet<B, PacketLanes16>,
           &bvh_occluded_packet<B, PacketLanes16, AnyHitLeaf>,
           PacketLanes16::P,
-          direct_leaf};
+          call};
+}
+
+template <class B>
+struct WidthTables {
+  BvhTraversal table, mt_direct, mt_inlined, watertight;
+};
+
+template <class B>
+constexpr WidthTables<B> width_tables(int width) {
+  return {traversal_table<B, TableLeaf, TableAnyHitLeaf>(width, LeafCall::table),
+          traversal_table<B, DirectMtLeaf, DirectMtLeaf>(width, LeafCall::direct),
+          traversal_table<B, InlinedMtLeaf, DirectMtLeaf>(width, LeafCall::inlined),
+          traversal_table<B, WatertightLeaf<vfloat>, WatertightLeaf<vfloat>>(width, LeafCall::direct)};
 }
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const BvhTraversal k8 = traversal_table<BoxLanes8, TableLeaf, TableAnyHitLeaf>(8, false);
-constinit const BvhTraversal k16 = traversal_table<BoxLanes16, TableLeaf, TableAnyHitLeaf>(16, false);
-constinit const BvhTraversal k8_direct = traversal_table<BoxLanes8, DirectMtLeaf, DirectMtLeaf>(8, true);
-constinit const BvhTraversal k16_direct = traversal_table<BoxLanes16, DirectMtLeaf, DirectMtLeaf>(16, true);
-constinit const BvhTraversal k8_watertight =
-    traversal_table<BoxLanes8, WatertightLeaf<vfloat>, WatertightLeaf<vfloat>>(8, true);
-constinit const BvhTraversal k16_watertight =
-    traversal_table<BoxLanes16, WatertightLeaf<vfloat>, WatertightLeaf<vfloat>>(16, true);
+constinit const WidthTables<BoxLanes8> k8 = width_tables<BoxLanes8>(8);
+constinit const WidthTables<BoxLanes16> k16 = width_tables<BoxLanes16>(16);
+
+template <class B>
+const BvhTraversal* pick(const WidthTables<B>& k, LeafCall call, Intersector intersector) {
+  if (call == LeafCall::table) return &k.table;
+  if (intersector == Intersector::mt) return call == LeafCall::inlined ? &k.mt_inlined : &k.mt_direct;
+  return intersector == Intersector::watertight ? &k.watertight : &k.table;
+}
 }  // namespace
 
-const BvhTraversal* bvh_traversal(int width, bool direct_leaf, Intersector intersector) {
-  const bool mt = direct_leaf && intersector == Intersector::mt;
-  const bool watertight = direct_leaf && intersector == Intersector::watertight;
+const BvhTraversal* bvh_traversal(int width, LeafCall call, Intersector intersector) {
   switch (width) {
-    case 8: return mt ? &k8_direct : watertight ? &k8_watertight : &k8;
-    case 16: return mt ? &k16_direct : watertight ? &k16_watertight : &k16;
+    case 8: return pick(k8, call, intersector);
+    case 16: return pick(k16, call, intersector);
     default: return nullptr;
   }
 }

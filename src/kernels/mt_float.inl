@@ -359,8 +359,11 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
 // ids, so a tie keeps the earlier hit. Same hit as closest_mt_float_rays (whose per-lane best
 // vectors are reduced at the end), but only the ray's lanes and the pre-test threshold stay live
 // across steps: the single-ray leaf then fits AVX2's 16 vector registers without spilling them.
+// Always inlined, for the traversals of large trees that inline their leaves (LeafCall::inlined);
+// closest_mt_float_one is the same kernel as a function of its own.
 template <class V, bool TminZero, MtPretest P = MtPretest::sign_bits>
-void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+RAYVEC_INLINE void closest_mt_float_one_inline(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                               const Ray& ray, Hit& hit) {
   constexpr uint32_t W = V::W;
   const RayLanes<V> r = broadcast_ray<V>(ray);
   const float limit = ray.tmax < hit.t ? ray.tmax : hit.t;
@@ -395,6 +398,11 @@ void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end,
   const int32_t id = T.id[slot_offset(winner)];
   if (best < hit.t || (best == hit.t && (hit.tri < 0 || id < hit.tri)))
     hit = Hit{best + 0.0f, (0.0f - un) / adet, vn / adet, id};  // as mt_finish: no −0
+}
+
+template <class V, bool TminZero, MtPretest P = MtPretest::sign_bits>
+void closest_mt_float_one(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray& ray, Hit& hit) {
+  closest_mt_float_one_inline<V, TminZero, P>(T, begin, end, ray, hit);
 }
 
 // tmin = 0 (camera and most secondary rays) drops the multiply of the lower depth pre-test.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accel/brute_force.h"
+#include "accuracy/hard_cases.h"
 #include "accel/bvh_accelerator.h"
 #include "bvh/bvh_traversal.h"
 #include "bvh_cases.h"
@@ -29,7 +30,7 @@ class BvhTraversal : public test::BvhCaseTest {
     return GetParam().intersector == Intersector::mt64 || GetParam().intersector == Intersector::watertight64;
   }
 
-  // The options of expect_same's BvhAccelerator: this case's width, direct_leaf_, merge_steps_ and,
+  // The options of expect_same's BvhAccelerator: this case's width, leaf_call_, merge_steps_ and,
   // when given, leaves from `sah` instead of the kernel's width.
   BvhOptions options(std::optional<SahConfig> sah = std::nullopt) const {
     BvhOptions o;
@@ -38,7 +39,7 @@ class BvhTraversal : public test::BvhCaseTest {
       o.leaves_from_kernel = false;
     }
     o.width = GetParam().width;
-    o.direct_leaf = direct_leaf_;
+    o.leaf_call = leaf_call_;
     o.merge_steps = merge_steps_;
     o.stored_normals = stored_normals_;
     return o;
@@ -72,8 +73,8 @@ class BvhTraversal : public test::BvhCaseTest {
     }
   }
 
-  int direct_leaf_ = -1;                        // BvhOptions::direct_leaf of expect_same's BvhAccelerator
-  int merge_steps_ = BvhOptions{}.merge_steps;  // and its merge_steps
+  int leaf_call_ = -1;                                // BvhOptions::leaf_call of expect_same's BvhAccelerator
+  int merge_steps_ = BvhOptions{}.merge_steps;        // and its merge_steps
   int stored_normals_ = BvhOptions{}.stored_normals;  // and its stored_normals
 };
 
@@ -177,55 +178,79 @@ TEST(BvhNormals, StoredForMtOnSmallMeshesWithinTheBudget) {
     for (const int option : {-1, 0, 1}) EXPECT_EQ(bvh_normals(other, option, tree, n, n), Normals::formed);
 }
 
-// The traversals' two leaf calls — through the kernel table, and the float kernel called directly
-// (AVX2 and AVX-512) — both equal brute force, with tmin < 0, = 0 and > 0 (the direct `mt` call
-// picks the kernel's tmin = 0 form itself). With the `mt` intersector on AVX2 and AVX-512 the
-// closest-hit traversals are two different functions, on the scalar ISA the same (table) one; on
-// AVX2 the any-hit traversal's leaves are called directly too (with the ray's lanes formed once per
-// ray), with and without a filter; on AVX-512 they are under both settings (one any-hit function).
-// With `watertight` on AVX2 and AVX-512 both traversals call the kernel directly, the ray's shear
-// formed once per ray.
-TEST_P(BvhTraversal, DirectAndTableLeafCallsMatchBruteForce) {
+// The traversals' three leaf calls — through the kernel table, the float kernel called directly
+// and `mt`'s closest-hit kernel inlined (AVX2 and AVX-512) — all equal brute force, with tmin < 0,
+// = 0 and > 0 (the direct `mt` calls pick the kernel's tmin = 0 form themselves), and on the
+// hard-case families (edges, vertices, grazing and parallel rays, tiny and far triangles). With the `mt`
+// intersector on AVX2 and AVX-512 the closest-hit traversals are three different functions, on the
+// scalar ISA the same (table) one; on AVX2 the any-hit traversal's leaves are called directly too
+// (with the ray's lanes formed once per ray), with and without a filter; on AVX-512 they are under
+// every setting (one any-hit function). With `watertight` on AVX2 and AVX-512 both traversals call
+// the kernel directly, the ray's shear formed once per ray; inlined means direct there.
+TEST_P(BvhTraversal, EveryLeafCallMatchesBruteForce) {
   std::vector<Ray> rays = test::random_rays(1500, 1.5f, 21);
   for (std::size_t i = 0; i < rays.size(); ++i)
     rays[i].tmin = i % 3 == 0 ? 0.0f : (i % 3 == 1 ? 0.05f : -0.2f);
-  for (const int direct : {0, 1}) {
-    direct_leaf_ = direct;
+  // the hard cases where the leaf calls differ (the others' are all the table's; `paper` misses the
+  // tiny families by contract)
+  const Intersector in = GetParam().intersector;
+  const std::vector<HardCaseFamily> hard = in == Intersector::mt || in == Intersector::watertight
+                                               ? hard_case_families(31, 1)
+                                               : std::vector<HardCaseFamily>{};
+  for (const LeafCall call : {LeafCall::table, LeafCall::direct, LeafCall::inlined}) {
+    leaf_call_ = int(call);
     expect_same(test::random_soup(2500, 0.1f, 22), rays);
     expect_same(test::sphere(1.0f, 30, 40), rays);
+    for (const HardCaseFamily& f : hard) {
+      if (f.degenerate) continue;  // never hit: expect_same wants a scene that tests something
+      SCOPED_TRACE(f.name);
+      expect_same(f.mesh, f.rays);
+    }
   }
-  BvhOptions table, direct;
-  table.width = direct.width = GetParam().width;
-  table.direct_leaf = 0;
-  direct.direct_leaf = 1;
+  BvhOptions table, direct, inlined;
+  table.width = direct.width = inlined.width = GetParam().width;
+  table.leaf_call = int(LeafCall::table);
+  direct.leaf_call = int(LeafCall::direct);
+  inlined.leaf_call = int(LeafCall::inlined);
   const TriangleMesh one = test::random_soup(10, 0.1f, 23);
-  const BvhAccelerator a(one, config(), table), b(one, config(), direct);
-  const Intersector in = GetParam().intersector;
-  const bool watertight = GetParam().isa != Isa::scalar && in == Intersector::watertight;
-  const bool has_direct = GetParam().isa != Isa::scalar && (in == Intersector::mt || watertight);
-  if (has_direct) {
+  const BvhAccelerator a(one, config(), table), b(one, config(), direct), c(one, config(), inlined);
+  const bool simd = GetParam().isa != Isa::scalar;
+  const bool mt = simd && in == Intersector::mt, watertight = simd && in == Intersector::watertight;
+  if (mt || watertight) {
     EXPECT_NE(a.traversal().closest, b.traversal().closest);
   } else {
     EXPECT_EQ(a.traversal().closest, b.traversal().closest);  // no direct form: both the table call
   }
-  if (has_direct && (GetParam().isa == Isa::avx2 || watertight)) {
+  if (mt) {
+    EXPECT_NE(b.traversal().closest, c.traversal().closest);
+  } else {
+    EXPECT_EQ(b.traversal().closest, c.traversal().closest);  // no inlined form: the direct or table one
+  }
+  if ((mt && GetParam().isa == Isa::avx2) || watertight) {
     EXPECT_NE(a.traversal().occluded, b.traversal().occluded);
   } else {
     EXPECT_EQ(a.traversal().occluded, b.traversal().occluded);
   }
-  EXPECT_EQ(b.traversal().direct_leaf, has_direct);
+  EXPECT_EQ(b.traversal().occluded, c.traversal().occluded);  // inlining is closest-hit only
+  EXPECT_EQ(a.traversal().leaf_call, LeafCall::table);
+  EXPECT_EQ(b.traversal().leaf_call, mt || watertight ? LeafCall::direct : LeafCall::table);
+  EXPECT_EQ(c.traversal().leaf_call, mt           ? LeafCall::inlined
+                                     : watertight ? LeafCall::direct
+                                                  : LeafCall::table);
 }
 
-TEST(BvhTraversalRule, MtAndWatertightLeavesCalledDirectlyOnAvx2AndAvx512) {
-  for (const Intersector direct : {Intersector::mt, Intersector::watertight}) {
-    EXPECT_TRUE(default_direct_leaf(Isa::avx512, direct));
-    EXPECT_TRUE(default_direct_leaf(Isa::avx2, direct));
-    EXPECT_FALSE(default_direct_leaf(Isa::scalar, direct));
+TEST(BvhTraversalRule, MtAndWatertightLeavesCalledDirectlyOnAvx2AndAvx512MtInlinedOnLargeTrees) {
+  const std::size_t small = kWideNodeTriangles - 1, large = kWideNodeTriangles;
+  for (const Isa isa : {Isa::avx512, Isa::avx2}) {
+    EXPECT_EQ(default_leaf_call(isa, Intersector::mt, small), LeafCall::direct);
+    EXPECT_EQ(default_leaf_call(isa, Intersector::mt, large), LeafCall::inlined);
+    EXPECT_EQ(default_leaf_call(isa, Intersector::watertight, small), LeafCall::direct);
+    EXPECT_EQ(default_leaf_call(isa, Intersector::watertight, large), LeafCall::direct);
+    for (const Intersector other : {Intersector::paper, Intersector::mt64, Intersector::watertight64})
+      EXPECT_EQ(default_leaf_call(isa, other, large), LeafCall::table);
   }
-  for (const Intersector other : {Intersector::paper, Intersector::mt64, Intersector::watertight64}) {
-    EXPECT_FALSE(default_direct_leaf(Isa::avx512, other));
-    EXPECT_FALSE(default_direct_leaf(Isa::avx2, other));
-  }
+  for (const Intersector any : {Intersector::mt, Intersector::watertight, Intersector::paper})
+    EXPECT_EQ(default_leaf_call(Isa::scalar, any, large), LeafCall::table);
 }
 
 TEST_P(BvhTraversal, MatchesBruteForceWithLargeLeavesAndFewBins) {
