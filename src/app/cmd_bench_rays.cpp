@@ -336,8 +336,8 @@ void register_bench_rays_command(Command& bench) {
                   std::to_string(int(kBvhBytesPerTriangle)) + " bytes a triangle)")
       .option("--direct-leaf", o.leaf_call,
               "tuning: how the traversals reach the mt or watertight leaf kernel: through the kernel "
-              "table (0), called directly (1), mt's closest-hit kernel inlined into the traversal (2); "
-              "-1 = default (directly on AVX2 and AVX-512, mt inlined from " +
+              "table (0), called directly (1), called directly with the closest-hit kernel inlined into "
+              "the traversal (2); -1 = default (directly on AVX2 and AVX-512, inlined from " +
                   std::to_string(kWideNodeTriangles) + " triangles up)");
   add_trace_options(cmd, o.trace, false);
   cmd.footer(

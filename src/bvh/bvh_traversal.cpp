@@ -30,10 +30,9 @@ int default_leaf_steps(Isa isa, std::size_t triangles) {
 }
 
 LeafCall default_leaf_call(Isa isa, Intersector intersector, std::size_t triangles) {
-  if (isa == Isa::scalar) return LeafCall::table;
-  if (intersector == Intersector::mt)
-    return triangles >= kWideNodeTriangles ? LeafCall::inlined : LeafCall::direct;
-  return intersector == Intersector::watertight ? LeafCall::direct : LeafCall::table;
+  if (isa == Isa::scalar || (intersector != Intersector::mt && intersector != Intersector::watertight))
+    return LeafCall::table;
+  return triangles >= kWideNodeTriangles ? LeafCall::inlined : LeafCall::direct;
 }
 
 const BvhTraversal& bvh_traversal(Isa isa, int width, LeafCall call, Intersector intersector) {

@@ -14,7 +14,7 @@ namespace rayvec {
 enum class LeafCall {
   table,    // through the kernel table: every intersector
   direct,   // the ISA's float `mt` or `watertight` kernel called directly, out of line
-  inlined,  // `mt`'s closest-hit kernel inlined into the traversal loop; otherwise as direct
+  inlined,  // as direct, but the closest-hit kernel inlined into the traversal loop
 };
 
 struct BvhTraversal {
@@ -45,7 +45,7 @@ struct BvhTraversal {
   int packet_width;  // rays per packet (16 on AVX-512 and AVX2, 0 none)
   // How the leaves reach the kernel (default_leaf_call): other than `table`, a float kernel of this
   // ISA directly — `mt` in closest() (on AVX2 also in occluded()), `watertight` in both; `inlined`:
-  // `mt`'s closest() kernel inlined. AVX-512's occluded() calls its float `mt` kernel directly
+  // the closest() kernel inlined. AVX-512's occluded() calls its float `mt` kernel directly
   // whatever this says.
   LeafCall leaf_call = LeafCall::table;
 };
@@ -79,9 +79,9 @@ int default_leaf_steps(Isa isa, std::size_t triangles);
 // any-hit traversal then calls its leaf kernel directly too, with the ray's lanes formed once per ray
 // (benchmarks.md#decision-any-hit-leaf-lanes); AVX-512's any-hit traversal always does. `watertight`:
 // both traversals, the ray's shear formed once per ray (bvh/watertight_leaf.inl;
-// benchmarks.md#decision-watertight-leaf). `mt` from kWideNodeTriangles triangles up: the
-// closest-hit kernel inlined (large trees, whose rays visit leaves that are out of cache, gain
-// from a call without its saves and reloads; benchmarks.md#decision-inlined-leaf). Other
+// benchmarks.md#decision-watertight-leaf). Both from kWideNodeTriangles triangles up: the
+// closest-hit kernel inlined (large trees, whose rays wait on leaves from memory, gain from a leaf
+// without a call's saves and reloads; small ones lose: benchmarks.md#decision-inlined-leaf). Other
 // intersectors and the scalar ISA: the table. Same results every way.
 LeafCall default_leaf_call(Isa isa, Intersector intersector, std::size_t triangles);
 

@@ -6,8 +6,9 @@
 // the registers the inlined kernel takes from the node steps, which then reload a few constants from
 // the stack. Other tables go through the table. Same hits as the called kernel: the same body
 // (closest_mt_float_one_inline), and the table entry's finite_ray test is already passed by every ray
-// reaching a leaf (BvhAccelerator rejects the others). Any hit: MtAnyHitLeaf. Included by the ISA
-// units after mt_any_hit_leaf.inl, where kThisIsa names the unit's ISA.
+// reaching a leaf (BvhAccelerator rejects the others). Any hit: MtAnyHitLeaf. `watertight` inlines
+// its leaf the same way (WatertightLeaf<V, true>). Included by the ISA units after
+// mt_any_hit_leaf.inl, where kThisIsa names the unit's ISA.
 
 namespace {
 

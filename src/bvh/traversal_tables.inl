@@ -4,7 +4,7 @@
 // `mt` kernels called directly, out of line or inlined) and TableAnyHitLeaf (the any-hit leaf of
 // the tables that call the closest-hit kernel through the table: the table itself, or where the
 // unit measured it faster, its direct any-hit kernel). Per node width: the table's leaves, the
-// direct `mt` leaves called and inlined, the direct `watertight` leaves (bvh/watertight_leaf.inl).
+// direct `mt` and `watertight` (bvh/watertight_leaf.inl) leaves, called and inlined.
 
 namespace {
 
@@ -22,7 +22,7 @@ constexpr BvhTraversal traversal_table(int width, LeafCall call) {
 
 template <class B>
 struct WidthTables {
-  BvhTraversal table, mt_direct, mt_inlined, watertight;
+  BvhTraversal table, mt_direct, mt_inlined, watertight_direct, watertight_inlined;
 };
 
 template <class B>
@@ -30,7 +30,8 @@ constexpr WidthTables<B> width_tables(int width) {
   return {traversal_table<B, TableLeaf, TableAnyHitLeaf>(width, LeafCall::table),
           traversal_table<B, DirectMtLeaf, DirectMtLeaf>(width, LeafCall::direct),
           traversal_table<B, InlinedMtLeaf, DirectMtLeaf>(width, LeafCall::inlined),
-          traversal_table<B, WatertightLeaf<vfloat>, WatertightLeaf<vfloat>>(width, LeafCall::direct)};
+          traversal_table<B, WatertightLeaf<vfloat>, WatertightLeaf<vfloat>>(width, LeafCall::direct),
+          traversal_table<B, WatertightLeaf<vfloat, true>, WatertightLeaf<vfloat>>(width, LeafCall::inlined)};
 }
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
@@ -40,8 +41,10 @@ constinit const WidthTables<BoxLanes16> k16 = width_tables<BoxLanes16>(16);
 template <class B>
 const BvhTraversal* pick(const WidthTables<B>& k, LeafCall call, Intersector intersector) {
   if (call == LeafCall::table) return &k.table;
-  if (intersector == Intersector::mt) return call == LeafCall::inlined ? &k.mt_inlined : &k.mt_direct;
-  return intersector == Intersector::watertight ? &k.watertight : &k.table;
+  const bool inlined = call == LeafCall::inlined;
+  if (intersector == Intersector::mt) return inlined ? &k.mt_inlined : &k.mt_direct;
+  if (intersector == Intersector::watertight) return inlined ? &k.watertight_inlined : &k.watertight_direct;
+  return &k.table;
 }
 }  // namespace
 

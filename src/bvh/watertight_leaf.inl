@@ -27,7 +27,9 @@ RAYVEC_INLINE void form_once(WatertightLeafRay<V>& s, const TriangleArrays& T, c
 }
 
 // The leaf calls out of line: inlined into the traversal loop, their registers (and the ray's
-// formation) would crowd the traversal's.
+// formation) would crowd the traversal's — except the closest-hit leaf of large trees, whose rays
+// wait on leaves from memory more than on the node steps' registers (LeafCall::inlined:
+// WatertightLeaf<V, true>, benchmarks.md#decision-inlined-leaf).
 template <class V>
 __attribute__((noinline)) bool watertight_occluded_leaf(const TriangleArrays& T, WatertightLeafRay<V>& s,
                                                         const Ray& ray, uint32_t begin, uint32_t end,
@@ -37,21 +39,35 @@ __attribute__((noinline)) bool watertight_occluded_leaf(const TriangleArrays& T,
 }
 
 template <class V>
-__attribute__((noinline)) void watertight_closest_leaf(const TriangleArrays& T, WatertightLeafRay<V>& s,
-                                                       const Ray& ray, uint32_t begin, uint32_t end,
-                                                       Hit& hit) {
+RAYVEC_INLINE void watertight_closest_leaf_inline(const TriangleArrays& T, WatertightLeafRay<V>& s,
+                                                  const Ray& ray, uint32_t begin, uint32_t end, Hit& hit) {
   form_once(s, T, ray);
   watertight_closest_ray<V>(T, s.r, begin, end, ray, hit);
 }
 
 template <class V>
+__attribute__((noinline)) void watertight_closest_leaf(const TriangleArrays& T, WatertightLeafRay<V>& s,
+                                                       const Ray& ray, uint32_t begin, uint32_t end,
+                                                       Hit& hit) {
+  watertight_closest_leaf_inline<V>(T, s, ray, begin, end, hit);
+}
+
+// Inlined: the closest-hit leaf inlined into the traversal loop (the any-hit leaf is called either way).
+template <class V, bool Inlined = false>
 struct WatertightLeaf {
   struct Closest {
     const Ray& ray;
     mutable WatertightLeafRay<V> s;
-    RAYVEC_INLINE Closest(const TriangleKernels&, const TriangleArrays&, const Ray& q) : ray(q) {}
+    // inlined: zeroed first, or g++ cannot follow that form_once writes it before the kernel, inlined
+    // into the traversal loop, reads it (-Wmaybe-uninitialized)
+    RAYVEC_INLINE Closest(const TriangleKernels&, const TriangleArrays&, const Ray& q) : ray(q) {
+      if constexpr (Inlined) s = WatertightLeafRay<V>{};
+    }
     RAYVEC_INLINE void closest(const TriangleArrays& tris, uint32_t begin, uint32_t end, Hit& hit) const {
-      watertight_closest_leaf<V>(tris, s, ray, begin, end, hit);
+      if constexpr (Inlined)
+        watertight_closest_leaf_inline<V>(tris, s, ray, begin, end, hit);
+      else
+        watertight_closest_leaf<V>(tris, s, ray, begin, end, hit);
     }
   };
   struct AnyHit {
