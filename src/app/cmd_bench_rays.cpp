@@ -26,15 +26,6 @@
 namespace rayvec {
 namespace {
 
-const char* leaf_call_name(LeafCall call) {
-  switch (call) {
-    case LeafCall::direct: return "direct";
-    case LeafCall::inlined: return "inlined";
-    case LeafCall::table: break;
-  }
-  return "table";
-}
-
 const char* leaf_call_words(LeafCall call) {
   switch (call) {
     case LeafCall::direct: return "called directly";

@@ -61,6 +61,11 @@ void register_info_command(CommandLine& cli) {
             "bvh normals (mt): stored below %zu triangles while the tree fits %.0f bytes a triangle, "
             "else formed per step\n",
             kFormedNormalsFrom, kBvhBytesPerTriangle);
+        const std::size_t large = kWideNodeTriangles;
+        std::printf(
+            "bvh leaf kernel (mt, watertight on avx2 and avx512): %s below %zu triangles, %s from there\n",
+            leaf_call_name(default_leaf_call(Isa::avx2, Intersector::mt, large - 1)), large,
+            leaf_call_name(default_leaf_call(Isa::avx2, Intersector::mt, large)));
         std::printf("threads: %d (OpenMP, %d cores)\n", omp_get_max_threads(), omp_get_num_procs());
         if (const auto problem = input_limit_problem())
           std::printf("input limit: %zu MB; %s, so every command that reads input refuses to start\n",

@@ -29,6 +29,15 @@ int default_leaf_steps(Isa isa, std::size_t triangles) {
   return isa != Isa::scalar && triangles < kWideNodeTriangles ? 1 : 2;
 }
 
+const char* leaf_call_name(LeafCall call) {
+  switch (call) {
+    case LeafCall::direct: return "direct";
+    case LeafCall::inlined: return "inlined";
+    case LeafCall::table: break;
+  }
+  return "table";
+}
+
 LeafCall default_leaf_call(Isa isa, Intersector intersector, std::size_t triangles) {
   if (isa == Isa::scalar || (intersector != Intersector::mt && intersector != Intersector::watertight))
     return LeafCall::table;

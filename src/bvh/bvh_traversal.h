@@ -17,6 +17,9 @@ enum class LeafCall {
   inlined,  // as direct, but the closest-hit kernel inlined into the traversal loop
 };
 
+// "table", "direct" or "inlined".
+const char* leaf_call_name(LeafCall call);
+
 struct BvhTraversal {
   Isa isa;
   int width;  // children per node this table traverses

@@ -65,5 +65,17 @@ TEST(InfoCli, NamesWhereTheBvhKeepsTheMtNormals) {
   EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
 }
 
+TEST(InfoCli, NamesHowTheBvhLeavesReachTheKernel) {
+  const auto r = test::run_cli("info");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::size_t large = kWideNodeTriangles;
+  const std::string expected =
+      std::string("bvh leaf kernel (mt, watertight on avx2 and avx512): ") +
+      leaf_call_name(default_leaf_call(Isa::avx512, Intersector::watertight, large - 1)) + " below " +
+      std::to_string(large) + " triangles, " +
+      leaf_call_name(default_leaf_call(Isa::avx512, Intersector::watertight, large)) + " from there";
+  EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace rayvec
