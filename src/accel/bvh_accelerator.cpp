@@ -53,9 +53,8 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
   tree_ = WideBvh(binary, traversal_->width, CollapseRule::lower_sah_cost, merge_slots);
   sort_leaf_slots(tree_, binary.order);
   tree_.set_box_epsilon(options.box_epsilon);
-  // Small meshes only: in a large one a packet's rays spread over more triangles than a leaf holds, so
-  // the cull drops few and costs more than it saves (benchmarks.md#decision-packet-slot-cull).
-  tree_.set_packet_slot_cull(mesh.size() < kWideNodeTriangles);
+  tree_.set_packet_slot_cull(options.packet_slot_cull < 0 ? mesh.size() < kPacketSlotCullBelow
+                                                          : options.packet_slot_cull != 0);
   tris_ = TriangleSoA(mesh, binary.order,
                       bvh_normals(config.intersector, options.stored_normals, tree_.bytes(),
                                   binary.order.size(), mesh.size()));

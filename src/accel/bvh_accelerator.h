@@ -33,6 +33,10 @@ struct BvhOptions {
   // leave the kernels to form them per step: −1 = bvh_normals' default, 1 = stored for `mt`, 0 =
   // never stored. No other intersector reads them. Same hits either way.
   int stored_normals = -1;
+  // Whether uniform forward packets step only the leaf triangles their hull can reach
+  // (bvh/packet_slot_cull.inl): 1 = always, 0 = never, −1 = below kPacketSlotCullBelow triangles.
+  // Same hits either way.
+  int packet_slot_cull = -1;
 };
 
 // The memory budget of a BVH with its triangle rows, in bytes per triangle of the mesh.
@@ -40,6 +44,11 @@ inline constexpr double kBvhBytesPerTriangle = 64.0;
 // From this many triangles the kernels form the normals: the leaves' rows no longer stay in cache,
 // and fewer bytes a leaf pay for the arithmetic.
 inline constexpr std::size_t kFormedNormalsFrom = std::size_t(1) << 18;
+// Below this many triangles packets cull a leaf's triangles by their boxes (BvhOptions::packet_slot_cull):
+// a 4×4 tile of a camera or of shadow rays reaches a few of a leaf's triangles. Above it, at the
+// resolutions that frame such meshes, a tile spreads over about as many triangles as a leaf holds
+// and the boxes cost more than they save (benchmarks.md#decision-packet-slot-cull).
+inline constexpr std::size_t kPacketSlotCullBelow = std::size_t(1) << 18;
 
 // Whether a BVH of `tree_bytes` over `slots` triangle slots (padding included) for a mesh of
 // `triangles` stores the `mt` normals (BvhOptions::stored_normals): by default for `mt` on meshes

@@ -46,6 +46,7 @@ struct Options {
   int builds = 3;  // builds timed; the median is reported
   double split_budget = SahConfig{}.split_budget;
   int stored_normals = BvhOptions{}.stored_normals;
+  int slot_cull = BvhOptions{}.packet_slot_cull;
 };
 
 std::string json_array(const std::vector<double>& v) {
@@ -160,6 +161,8 @@ int run(const Options& o) {
   bvh_options.sah.split_budget = float(o.split_budget);
   if (o.stored_normals < -1 || o.stored_normals > 1) throw InputError("--stored-normals: must be -1, 0 or 1");
   bvh_options.stored_normals = o.stored_normals;
+  if (o.slot_cull < -1 || o.slot_cull > 1) throw InputError("--slot-cull: must be -1, 0 or 1");
+  bvh_options.packet_slot_cull = o.slot_cull;
   if (o.leaf_block != 0) {
     if (o.leaf_block < 1 || o.leaf_block > 32) throw InputError("--leaf-block: must be 1 to 32");
     bvh_options.sah.leaf_block = uint32_t(o.leaf_block);
@@ -217,9 +220,9 @@ int run(const Options& o) {
   if (o.json) {
     std::printf(
         "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
-        "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,\"leaf_call\":\"%"
-        "s\","
-        "\"merge_steps\":%d,\"split_budget\":%.3f,\"references_per_tri\":%.4f,\"stored_normals\":%s,"
+        "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
+        "\"leaf_call\":\"%s\",\"merge_steps\":%d,\"split_budget\":%.3f,\"references_per_tri\":%.4f,"
+        "\"stored_normals\":%s,\"packet_slot_cull\":%s,"
         "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
         "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
         json_string(o.model).c_str(), mesh.size(), width, height, json_string(cpu_features().brand).c_str(),
@@ -227,7 +230,8 @@ int run(const Options& o) {
         threads, bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
         bvh->traversal().leaf_call != LeafCall::table ? "true" : "false",
         leaf_call_name(bvh->traversal().leaf_call), o.merge_steps, double(split_budget), refs_per_tri,
-        bvh->triangles().stores_normals() ? "true" : "false", o.builds, build_s,
+        bvh->triangles().stores_normals() ? "true" : "false",
+        bvh->tree().arrays().packet_slot_cull ? "true" : "false", o.builds, build_s,
         json_array(build_runs).c_str(), bytes_per_tri, fma.avx2, fma.avx512);
     print_sets_json(run);
     if (o.vs_embree) {
@@ -258,11 +262,13 @@ int run(const Options& o) {
                   : "");
   std::printf(
       "bvh: %d-wide, %u nodes, %u leaves (merged up to %d kernel steps), %.3f references per triangle "
-      "(spatial-split budget %.2f), depth %u, leaf kernel %s, normals %s; build %.4f s; %.1f bytes/triangle "
+      "(spatial-split budget %.2f), depth %u, leaf kernel %s, normals %s, packet slot cull %s; build %.4f s; "
+      "%.1f bytes/triangle "
       "(nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), o.merge_steps, refs_per_tri,
       double(split_budget), bvh->tree().depth(), leaf_call_words(bvh->traversal().leaf_call),
-      bvh->triangles().stores_normals() ? "stored" : "formed per step", build_s, bytes_per_tri,
+      bvh->triangles().stores_normals() ? "stored" : "formed per step",
+      bvh->tree().arrays().packet_slot_cull ? "on" : "off", build_s, bytes_per_tri,
       double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
   if (o.vs_embree)
     std::printf(
@@ -329,7 +335,11 @@ void register_bench_rays_command(Command& bench) {
               "tuning: how the traversals reach the mt or watertight leaf kernel: through the kernel "
               "table (0), called directly (1), called directly with the closest-hit kernel inlined into "
               "the traversal (2); -1 = default (directly on AVX2 and AVX-512, inlined from " +
-                  std::to_string(kWideNodeTriangles) + " triangles up)");
+                  std::to_string(kWideNodeTriangles) + " triangles up)")
+      .option("--slot-cull", o.slot_cull,
+              "tuning: packets step only the leaf triangles whose boxes their hull reaches (1) or every "
+              "triangle (0); -1 = default (below " +
+                  std::to_string(kPacketSlotCullBelow) + " triangles)");
   add_trace_options(cmd, o.trace, false);
   cmd.footer(
       "Ray sets (exact definitions in src/bench/ray_sets.h): primary = a pinhole camera framing the\n"
