@@ -5,9 +5,9 @@
 // (every tmin >= 0, one direction sign per axis: camera tiles, shadow rays toward one light) first
 // tests the boxes of all the leaf's triangles against the hull of its lanes — the hull pre-test of a
 // node's children (box_lanes.inl, hits_hull) with each triangle's box in place of a child's — and
-// steps only the triangles whose box the hull enters — in the trees of small meshes, where a leaf's
-// triangles are large beside a packet's footprint (BvhArrays::packet_slot_cull;
-// benchmarks.md#decision-packet-slot-cull).
+// steps only the triangles whose box the hull enters — in the trees of small and medium meshes,
+// where a leaf's triangles are large beside a packet's footprint (BvhArrays::packet_slot_cull,
+// kPacketSlotCullBelow; benchmarks.md#decision-packet-slot-cull).
 // Included by the BVH ISA units (bvh_traversal_<isa>.cpp) after their box lanes, inside namespace
 // rayvec::<isa>; used by the packet leaf kernels and packet_traversal.inl.
 //
@@ -100,7 +100,8 @@ struct SlotCull {
           (vmax(vmax(v0[a], v1[a]), v2[a]) + m).store(box[3 + a] + j);
         }
         if constexpr (Mt) {
-          const float* ng = T.ng ? T.ng + normal_offset(b) + j : nullptr;  // stored: small meshes mostly
+          const float* ng =
+              T.ng ? T.ng + normal_offset(b) + j : nullptr;  // stored: below 2^18 triangles mostly
           const MtNormal<vfloat> n = ng ? MtNormal<vfloat>{vfloat::load(ng), vfloat::load(ng + kSlotBlock),
                                                            vfloat::load(ng + 2 * kSlotBlock)}
                                         : mt_normal(v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2],
