@@ -20,13 +20,13 @@ constexpr BvhTraversal traversal_table(int width, LeafCall call) {
           call};
 }
 
-template <class B>
+// One node width's tables.
 struct WidthTables {
   BvhTraversal table, mt_direct, mt_inlined, watertight_direct, watertight_inlined;
 };
 
 template <class B>
-constexpr WidthTables<B> width_tables(int width) {
+constexpr WidthTables width_tables(int width) {
   return {traversal_table<B, TableLeaf, TableAnyHitLeaf>(width, LeafCall::table),
           traversal_table<B, DirectMtLeaf, DirectMtLeaf>(width, LeafCall::direct),
           traversal_table<B, InlinedMtLeaf, DirectMtLeaf>(width, LeafCall::inlined),
@@ -35,11 +35,10 @@ constexpr WidthTables<B> width_tables(int width) {
 }
 
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
-constinit const WidthTables<BoxLanes8> k8 = width_tables<BoxLanes8>(8);
-constinit const WidthTables<BoxLanes16> k16 = width_tables<BoxLanes16>(16);
+constinit const WidthTables k8 = width_tables<BoxLanes8>(8);
+constinit const WidthTables k16 = width_tables<BoxLanes16>(16);
 
-template <class B>
-const BvhTraversal* pick(const WidthTables<B>& k, LeafCall call, Intersector intersector) {
+const BvhTraversal* pick(const WidthTables& k, LeafCall call, Intersector intersector) {
   if (call == LeafCall::table) return &k.table;
   const bool inlined = call == LeafCall::inlined;
   if (intersector == Intersector::mt) return inlined ? &k.mt_inlined : &k.mt_direct;
