@@ -26,15 +26,6 @@
 namespace rayvec {
 namespace {
 
-const char* leaf_call_words(LeafCall call) {
-  switch (call) {
-    case LeafCall::direct: return "called directly";
-    case LeafCall::inlined: return "inlined";
-    case LeafCall::table: break;
-  }
-  return "through the kernel table";
-}
-
 struct Options {
   std::string model, size = "1024x1024";
   TraceOptions trace;
@@ -262,11 +253,12 @@ int run(const Options& o) {
                   : "");
   std::printf(
       "bvh: %d-wide, %u nodes, %u leaves (merged up to %d kernel steps), %.3f references per triangle "
-      "(spatial-split budget %.2f), depth %u, leaf kernel %s, normals %s, packet slot cull %s; build %.4f s; "
+      "(spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, packet slot cull %s; build %.4f "
+      "s; "
       "%.1f bytes/triangle "
       "(nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), o.merge_steps, refs_per_tri,
-      double(split_budget), bvh->tree().depth(), leaf_call_words(bvh->traversal().leaf_call),
+      double(split_budget), bvh->tree().depth(), leaf_call_name(bvh->traversal().leaf_call),
       bvh->triangles().stores_normals() ? "stored" : "formed per step",
       bvh->tree().arrays().packet_slot_cull ? "on" : "off", build_s, bytes_per_tri,
       double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
