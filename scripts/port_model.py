@@ -69,9 +69,11 @@ def disassembly(out):
     return code
 
 
-def loop_body(code, rays, normals):
+def loop_body(code, rays, tests, normals):
     """The loop's straight-line path with every branch after a mask test taken (no lane passed), in
-    the walk that reads stored normals or the one that forms them (the kernel has both)."""
+    the walk that reads stored normals or the one that forms them (the kernel has both); `tests`:
+    the mask tests a step has on that path at least. A step of a ray has 16 products and FMAs with
+    stored normals: a loop with fewer than 12 a ray is not the triangle loop."""
     index = {addr: i for i, (addr, _) in enumerate(code)}
     # a step's early-out: a conditional branch on a mask register (AVX-512), on a vtestps, or on sign
     # bits a vmovmskps took in the three instructions before it (AVX2)
@@ -82,6 +84,24 @@ def loop_body(code, rays, normals):
             t.startswith("vmovmsk") for _, t in code[max(0, i - 3):i])
 
     exits = {i for i in range(len(code)) if early_out(i)}
+
+    # a group's test branches (through unconditional jumps) to the out-of-line call of its rays'
+    # steps where a lane passed, and falls through where none did
+    def to_call(target):
+        i, hops = index.get(target, len(code)), 0
+        for _ in range(80):
+            if i >= len(code):
+                return False
+            text = code[i][1]
+            if text.startswith("call"):
+                return True
+            if re.fullmatch(r"jmp\s+[0-9a-f]+", text) and hops < 3:
+                i, hops = index.get(int(text.split()[1], 16), len(code)), hops + 1
+                continue
+            if text.startswith("j"):
+                return False
+            i += 1
+        return False
 
     def mask_tests(tail, head):
         return sum(1 for i in exits if head <= code[i][0] <= tail)
@@ -96,7 +116,7 @@ def loop_body(code, rays, normals):
                 target = int(text.split()[1], 16) if re.fullmatch(r"j\w+\s+[0-9a-f]+", text) else None
                 if addr == tail:
                     return body
-                if i in exits and target is not None:  # no lane passed: skip ahead
+                if i in exits and target is not None and not to_call(target):  # no lane passed: skip ahead
                     i = index.get(target, len(code))
                     continue
             elif not text.startswith("nop"):
@@ -104,17 +124,20 @@ def loop_body(code, rays, normals):
             i += 1
         return None
 
-    # the triangle loops: conditional backward branches around a step's two mask tests (pre-test and
-    # exact test) for each ray whose no-hit path closes; of each walk's, the shortest
+    # the triangle loops: conditional backward branches around a step's mask tests (pre-test and
+    # exact test of each ray, or the one pre-test of a group) whose no-hit path closes; of each
+    # walk's, the shortest
     loops = [(addr, int(t.split()[1], 16)) for addr, t in code
              if re.fullmatch(r"j(?!mp)\w+\s+[0-9a-f]+", t) and int(t.split()[1], 16) < addr]
-    bodies = [b for b in (path(*span) for span in loops if mask_tests(*span) >= 2 * rays) if b]
+    def products(b):
+        return sum(1 for t in b if t.startswith(("vmulps", "vfmadd", "vfmsub", "vfnmadd", "vfnmsub")))
+
+    bodies = [b for b in (path(*span) for span in loops if mask_tests(*span) >= tests)
+              if b and products(b) >= 12 * rays]
     if not bodies:
         sys.exit("port_model: no loop found")
     # the walk loading the normal has the fewest products a step; the one forming it, its cross
     # product more (the shortest such loop: longer ones are copies the compiler unrolled)
-    def products(b):
-        return sum(1 for t in b if t.startswith(("vmulps", "vfmadd", "vfmsub", "vfnmadd", "vfnmsub")))
 
     fewest = min(products(b) for b in bodies)
     chosen = [b for b in bodies if (products(b) == fewest) == (normals == "stored")]
@@ -162,8 +185,12 @@ def main():
     if not shutil.which("llvm-mca"):
         print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
         sys.exit(77)
-    sym = symbol(a.isa, a.rays, a.pretest, a.rays > 2 or a.origin == "shared")
-    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays, a.normals)
+    shared = a.rays > 2 or a.origin == "shared"
+    sym = symbol(a.isa, a.rays, a.pretest, shared)
+    # rays from one origin with the sign bits test the step once for all of them (mt_any_ray_passes)
+    # and leave the rays' own tests to an out-of-line call; else two mask tests a ray
+    tests = 1 if shared and a.rays > 1 and a.pretest == "sign" else 2 * a.rays
+    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays, tests, a.normals)
     tests = ISAS[a.isa][1] * a.rays
     print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "
           f"({a.isa}, {a.rays} ray(s){', ' + a.origin + ' origin' if a.rays == 2 else ''}, {a.pretest} pre-test, "

@@ -322,6 +322,32 @@ RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
       MtBest<V>{V::broadcast(initial), V::broadcast(initial * kMtWiden), zero, zero, zero, zero, false}};
 }
 
+// Whether a lane of the step may pass the sign-bit pre-test for any of the R rays from the origin
+// part `o`: their sign values ANDed (a lane's sign stays clear where some ray's is), then one test.
+// A mask instruction costs a step as much as a multiply where the FMA pipes also write the masks
+// (AMD's), and almost every step passes for no ray: one test a step instead of one a ray. Where it
+// passes, each ray's step runs as alone (mt_closest_step forms the same numerators again), so every
+// ray keeps its bits.
+template <class V, bool TminZero, int R, class At>
+RAYVEC_INLINE bool mt_any_ray_passes(const At& at, const MtRay<V>* q, const MtOrigin<V>& o,
+                                     typename V::Mask active, const V* neg_lo) {
+  V some = mt_sign_values<V, TminZero>(mt_numerator_values<V>(at, q[0].r, o), neg_lo[0], q[0].b.hi);
+#pragma GCC unroll 8
+  for (int k = 1; k < R; ++k)
+    some = and_bits(some,
+                    mt_sign_values<V, TminZero>(mt_numerator_values<V>(at, q[k].r, o), neg_lo[k], q[k].b.hi));
+  return any_sign_clear(active, some);
+}
+
+// Each ray's step of the rare steps that pass mt_any_ray_passes, out of line: inlined, g++ keeps the
+// fast path's numerators of every ray for it (spilled to the stack at every step).
+template <class V, bool TminZero, int R, MtPretest P, class At>
+[[gnu::noinline, gnu::cold]] void mt_closest_steps(const At& at, uint32_t i, MtRay<V>* q,
+                                                   const MtOrigin<V>& o, typename V::Mask active,
+                                                   const V* neg_lo) {
+  for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(at, i, q[k].r, o, active, neg_lo[k], q[k].b);
+}
+
 // R rays (1, 2, 4 or 8) against [begin, end): each triangle step is loaded once for all R rays. With
 // SharedOrigin (the rays' origins equal bit for bit) the origin part of each step is formed once.
 template <class V, bool TminZero, int R, MtPretest P = MtPretest::sign_bits, bool SharedOrigin = false>
@@ -339,6 +365,11 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
           // the rays' steps unrolled: left a loop (g++ does for four rays and more), each ray's lanes
           // and best hit are reloaded from memory at every step
           const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
+          if constexpr (P == MtPretest::sign_bits) {
+            if (mt_any_ray_passes<V, TminZero, R>(at, q, o, active, neg_lo))
+              mt_closest_steps<V, TminZero, R, P>(at, i, q, o, active, neg_lo);
+            return false;
+          }
 #pragma GCC unroll 8
           for (int k = 0; k < R; ++k)
             mt_closest_step<V, TminZero, P>(at, i, q[k].r, o, active, neg_lo[k], q[k].b);

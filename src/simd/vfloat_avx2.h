@@ -64,6 +64,7 @@ RAYVEC_INLINE vfloat fnmadd(vfloat a, vfloat b, vfloat c) { return {_mm256_fnmad
 RAYVEC_INLINE vfloat abs(vfloat a) { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)}; }
 RAYVEC_INLINE vfloat sign_bit(vfloat a) { return {_mm256_and_ps(_mm256_set1_ps(-0.0f), a.v)}; }
 RAYVEC_INLINE vfloat xor_bits(vfloat a, vfloat b) { return {_mm256_xor_ps(a.v, b.v)}; }
+RAYVEC_INLINE vfloat and_bits(vfloat a, vfloat b) { return {_mm256_and_ps(a.v, b.v)}; }
 // a with its sign flipped in the lanes where s is negative
 RAYVEC_INLINE vfloat xor_sign(vfloat a, vfloat s) { return xor_bits(a, sign_bit(s)); }
 RAYVEC_INLINE vdouble operator+(vdouble a, vdouble b) { return {_mm256_add_pd(a.v, b.v)}; }

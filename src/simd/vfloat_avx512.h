@@ -74,6 +74,9 @@ RAYVEC_INLINE vfloat sign_bit(vfloat a) {
 RAYVEC_INLINE vfloat xor_bits(vfloat a, vfloat b) {
   return {_mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(a.v), _mm512_castps_si512(b.v)))};
 }
+RAYVEC_INLINE vfloat and_bits(vfloat a, vfloat b) {
+  return {_mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a.v), _mm512_castps_si512(b.v)))};
+}
 // a with its sign flipped in the lanes where s is negative: a ^ (s & sign bit) in one instruction
 // (0x78 = A ^ (B & C)), where sign_bit and xor_bits would take two.
 RAYVEC_INLINE vfloat xor_sign(vfloat a, vfloat s) {

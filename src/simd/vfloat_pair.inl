@@ -69,6 +69,10 @@ RAYVEC_INLINE VPair<V> xor_bits(VPair<V> a, VPair<V> b) {
   return {xor_bits(a.lo, b.lo), xor_bits(a.hi, b.hi)};
 }
 template <class V>
+RAYVEC_INLINE VPair<V> and_bits(VPair<V> a, VPair<V> b) {
+  return {and_bits(a.lo, b.lo), and_bits(a.hi, b.hi)};
+}
+template <class V>
 RAYVEC_INLINE VPair<V> xor_sign(VPair<V> a, VPair<V> s) {
   return {xor_sign(a.lo, s.lo), xor_sign(a.hi, s.hi)};
 }

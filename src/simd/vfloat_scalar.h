@@ -72,6 +72,10 @@ template <typename T, typename B>
 RAYVEC_INLINE vlane<T, B> xor_bits(vlane<T, B> a, vlane<T, B> b) {
   return {std::bit_cast<T>(B(std::bit_cast<B>(a.v) ^ std::bit_cast<B>(b.v)))};
 }
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> and_bits(vlane<T, B> a, vlane<T, B> b) {
+  return {std::bit_cast<T>(B(std::bit_cast<B>(a.v) & std::bit_cast<B>(b.v)))};
+}
 // a with its sign flipped where s is negative
 template <typename T, typename B>
 RAYVEC_INLINE vlane<T, B> xor_sign(vlane<T, B> a, vlane<T, B> s) {
