@@ -328,14 +328,15 @@ RAYVEC_INLINE MtRay<V> mt_ray(const Ray& ray, const Hit& hit) {
 // (AMD's), and almost every step passes for no ray: one test a step instead of one a ray. Where it
 // passes, each ray's step runs as alone (mt_closest_step forms the same numerators again), so every
 // ray keeps its bits.
-template <class V, bool TminZero, int R, class At>
-RAYVEC_INLINE bool mt_any_ray_passes(const At& at, const MtRay<V>* q, const MtOrigin<V>& o,
-                                     typename V::Mask active, const V* neg_lo) {
-  V some = mt_sign_values<V, TminZero>(mt_numerator_values<V>(at, q[0].r, o), neg_lo[0], q[0].b.hi);
+// q[k].r: the rays' lanes; hi(k): their upper factors.
+template <class V, bool TminZero, int R, class At, class Q, class Hi>
+RAYVEC_INLINE bool mt_any_ray_passes(const At& at, const Q* q, const MtOrigin<V>& o, typename V::Mask active,
+                                     const V* neg_lo, const Hi& hi) {
+  V some = mt_sign_values<V, TminZero>(mt_numerator_values<V>(at, q[0].r, o), neg_lo[0], hi(0));
 #pragma GCC unroll 8
   for (int k = 1; k < R; ++k)
-    some = and_bits(some,
-                    mt_sign_values<V, TminZero>(mt_numerator_values<V>(at, q[k].r, o), neg_lo[k], q[k].b.hi));
+    some =
+        and_bits(some, mt_sign_values<V, TminZero>(mt_numerator_values<V>(at, q[k].r, o), neg_lo[k], hi(k)));
   return any_sign_clear(active, some);
 }
 
@@ -366,7 +367,9 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
           // and best hit are reloaded from memory at every step
           const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
           if constexpr (P == MtPretest::sign_bits) {
-            if (mt_any_ray_passes<V, TminZero, R>(at, q, o, active, neg_lo))
+            if (mt_any_ray_passes<V, TminZero, R>(
+                    at, q, o, active,
+                    neg_lo, [&](int k) __attribute__((always_inline)) { return q[k].b.hi; }))
               mt_closest_steps<V, TminZero, R, P>(at, i, q, o, active, neg_lo);
             return false;
           }

@@ -68,24 +68,62 @@ void closest_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t en
   if (k < n) closest_mt_float<V, P>(T, begin, end, rays[k], hits[k]);
 }
 
+// The any-hit steps of the open rays (bits of `done` clear) of a step where a lane may pass, out of
+// line (as mt_closest_steps); returns `done` with the rays that found a hit.
+template <class V, int R>
+[[gnu::noinline, gnu::cold]] unsigned mt_any_hit_steps(const TriangleArrays& T, const auto& at, uint32_t i,
+                                                       const MtAnyHitRay<V>* q, const MtOrigin<V>& o,
+                                                       typename V::Mask active,
+                                                       const HitFilter* const* filters, unsigned done) {
+  for (int k = 0; k < R; ++k)
+    if (!(done >> k & 1u) &&
+        mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q[k].r, o), active, q[k], filters[k]))
+      done |= 1u << k;
+  return done;
+}
+
 // R rays from one origin (finite, the origin bit for bit) against [begin, end) for any hit, each
 // triangle step loaded and its origin part formed once for all of them (as closest_mt_float_rays
 // does); *rays[k] with filters[k] (may be null). A ray drops out at its first hit, and the walk ends
 // once every ray has. Returns the bits of the occluded rays.
-template <class V, int R>
+// With the sign-bit tables of the vector ISAs the rays' steps are first tested together
+// (mt_any_ray_passes, as the closest-hit groups do; a ray that dropped out has its upper factor at
+// −inf, which fails every lane), and only where a lane may pass does each open ray run its ordered
+// any-hit step: one mask instruction a step instead of five a ray. The same hits: the sign test
+// reads lo·|det| and hi·|det| unrounded (fused) where the ordered one rounds them, and a lane the two
+// disagree on has t within an ulp of lo = tmin·(1 − 2^-20) or hi = limit·(1 + 2^-20), which the
+// exact test (tmin <= t < limit) rejects either way. The scalar ISA keeps its per-ray branches:
+// every ray's values formed before one test took it twice as long.
+template <class V, int R, MtPretest P>
 unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                       const Ray* const* rays, const HitFilter* const* filters) {
   MtAnyHitRay<V> q[R];
-  for (int k = 0; k < R; ++k) q[k] = mt_any_hit_ray<V>(*rays[k]);
+  V neg_lo[R], open_hi[R];  // the group test's −lo and hi, hi at −inf once a ray is done
+  for (int k = 0; k < R; ++k) {
+    q[k] = mt_any_hit_ray<V>(*rays[k]);
+    neg_lo[k] = V::broadcast(0.0f) - q[k].lo;
+    open_hi[k] = q[k].hi;
+  }
   unsigned done = 0;
   mt_steps<V>(
       T, begin, end, [&](const auto& at, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
         const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
+        if constexpr (P == MtPretest::sign_bits && V::W > 1) {
+          if (mt_any_ray_passes<V, false, R>(
+                  at, q, o, active,
+                  neg_lo, [&](int k) __attribute__((always_inline)) { return open_hi[k]; })) {
+            const unsigned now = mt_any_hit_steps<V, R>(T, at, i, q, o, active, filters, done);
+            for (int k = 0; k < R; ++k)
+              if ((now & ~done) >> k & 1u) open_hi[k] = V::broadcast(-__builtin_inff());
+            done = now;
+          }
+        } else {
 #pragma GCC unroll 8
-        for (int k = 0; k < R; ++k)
-          if (!(done >> k & 1u) &&
-              mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q[k].r, o), active, q[k], filters[k]))
-            done |= 1u << k;
+          for (int k = 0; k < R; ++k)
+            if (!(done >> k & 1u) &&
+                mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q[k].r, o), active, q[k], filters[k]))
+              done |= 1u << k;
+        }
         return done == (1u << R) - 1u;
       });
   return done;
@@ -107,7 +145,7 @@ inline constexpr int kOccludedOneOriginGroup = V::W >= 16 ? 4 : 8;
 // *rays[0..n) (n <= kMaxOccludedGroup) for any hit, filters[k] (may be null) for rays[k]: a group of
 // kOccludedOneOriginGroup<V> (or four) at a time where they start at one origin, else one by one.
 // Returns the bits of the occluded rays.
-template <class V>
+template <class V, MtPretest P>
 unsigned occluded_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                  const Ray* const* rays, const HitFilter* const* filters, int n) {
   constexpr int G = kOccludedOneOriginGroup<V>;
@@ -115,10 +153,10 @@ unsigned occluded_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32
   int k = 0;
   while (k < n) {
     if (k + G <= n && finite_one_origin(rays + k, G)) {
-      occluded |= occluded_mt_float_one_origin<V, G>(T, begin, end, rays + k, filters + k) << k;
+      occluded |= occluded_mt_float_one_origin<V, G, P>(T, begin, end, rays + k, filters + k) << k;
       k += G;
     } else if (G > 4 && k + 4 <= n && finite_one_origin(rays + k, 4)) {
-      occluded |= occluded_mt_float_one_origin<V, 4>(T, begin, end, rays + k, filters + k) << k;
+      occluded |= occluded_mt_float_one_origin<V, 4, P>(T, begin, end, rays + k, filters + k) << k;
       k += 4;
     } else {
       occluded |= unsigned(occluded_mt_float<V>(T, begin, end, *rays[k], filters[k])) << k;
@@ -137,7 +175,7 @@ constexpr TriangleKernels make_kernels(Isa isa) {
                            &closest_mt_float<V, P>,
                            &occluded_mt_float<V>,
                            &closest_group_mt_float<V, P>,
-                           &occluded_group_mt_float<V>};
+                           &occluded_group_mt_float<V, P>};
   else
     return TriangleKernels{isa, I, V::W, &closest_impl<V, I>, &occluded_impl<V, I>};
 }

@@ -152,6 +152,14 @@ struct Param {
   Intersector intersector;
 };
 
+// The tables of p: for `mt` both pre-test forms (each CPU's default runs only one; the group kernels
+// take a different path for each), else the one table.
+std::vector<const TriangleKernels*> tables_of(const Param& p) {
+  if (p.intersector != Intersector::mt) return {&triangle_kernels(p.isa, p.intersector)};
+  return {&triangle_kernels(p.isa, p.intersector, MtPretest::sign_bits),
+          &triangle_kernels(p.isa, p.intersector, MtPretest::ordered_compares)};
+}
+
 class KernelEquivalence : public ::testing::TestWithParam<Param> {
  protected:
   void SetUp() override {
@@ -245,7 +253,8 @@ TEST_P(KernelEquivalence, BatchMatchesOneRayAtATime) {
 // Rays from one origin (a camera's) share part of each step's arithmetic in the group kernels (8,
 // 4 or 2 rays); the hits must still be bit for bit those of one ray at a time: camera rays over more
 // than one chunk, in the second half some with tmin > 0 or a finite tmax (groups that mix them), and
-// pairs whose origins differ only in the sign of a zero (taken as two origins).
+// pairs whose origins differ only in the sign of a zero (taken as two origins); `mt` with both
+// pre-test tables (a group tests a step once with the sign bits, each ray with the ordered form).
 TEST_P(KernelEquivalence, BatchFromOneOriginMatchesOneRayAtATime) {
   const Param p = GetParam();
   TriangleMesh mesh = paper_triangles(kTriangleChunk + 300, 5);
@@ -266,21 +275,23 @@ TEST_P(KernelEquivalence, BatchFromOneOriginMatchesOneRayAtATime) {
     rays.push_back(Ray{{x, 0.5f, -1.0f}, {0.03f * float(k % 5) + 0.05f, 0.01f * float(k % 3), 1.0f}});
   }
   const TriangleSoA soa(mesh);
-  const TriangleKernels& k = triangle_kernels(p.isa, p.intersector);
-  const std::vector<Hit> one = trace(k, soa, rays);
-  std::vector<Hit> batch(rays.size());
-  closest_batch(k, soa.arrays(), 0, soa.size(), rays.data(), batch.data(), batch.size());
-  int hits = 0;
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    hits += one[i].hit();
-    ASSERT_EQ(batch[i].tri, one[i].tri) << "ray " << i;
-    if (batch[i].hit()) {
-      ASSERT_EQ(batch[i].t, one[i].t) << "ray " << i;
-      ASSERT_EQ(batch[i].u, one[i].u) << "ray " << i;
-      ASSERT_EQ(batch[i].v, one[i].v) << "ray " << i;
+  for (const TriangleKernels* table : tables_of(p)) {
+    const TriangleKernels& k = *table;
+    const std::vector<Hit> one = trace(k, soa, rays);
+    std::vector<Hit> batch(rays.size());
+    closest_batch(k, soa.arrays(), 0, soa.size(), rays.data(), batch.data(), batch.size());
+    int hits = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      hits += one[i].hit();
+      ASSERT_EQ(batch[i].tri, one[i].tri) << "ray " << i;
+      if (batch[i].hit()) {
+        ASSERT_EQ(batch[i].t, one[i].t) << "ray " << i;
+        ASSERT_EQ(batch[i].u, one[i].u) << "ray " << i;
+        ASSERT_EQ(batch[i].v, one[i].v) << "ray " << i;
+      }
     }
+    EXPECT_GT(hits * 4, int(rays.size()));
   }
-  EXPECT_GT(hits * 4, int(rays.size()));
 }
 
 // Ignores one triangle id (the ray's nearest hit, or none: −2).
@@ -289,35 +300,37 @@ bool ignore_id(const void* context, int32_t tri) { return tri == *static_cast<co
 // occluded_batch with rays from one origin (the any-hit groups) answers as one `occluded` call per
 // ray, each with its own filter: camera rays over more than one chunk, each ray's tmax at its nearest
 // hit, so only that triangle (or a tie) can occlude, and every other ray's filter ignoring it — a
-// filter given to the wrong ray of a group changes the answer.
+// filter given to the wrong ray of a group changes the answer; `mt` with both pre-test tables.
 TEST_P(KernelEquivalence, OccludedBatchFromOneOriginMatchesOneRayAtATime) {
   const Param p = GetParam();
   const TriangleSoA soa(paper_triangles(kTriangleChunk + 300, 5));
-  const TriangleKernels& k = triangle_kernels(p.isa, p.intersector);
-  const RayBatch camera = paper_camera_rays(24);
-  std::vector<Ray> rays;
-  std::vector<int32_t> ignored;
-  for (std::size_t i = 0; i < camera.size(); ++i) {
-    Ray r = camera[i];
-    Hit h;
-    k.closest(soa.arrays(), 0, soa.size(), r, h);
-    if (h.hit() && i % 3 != 2) r.tmax = h.t;
-    rays.push_back(r);
-    ignored.push_back(h.hit() && i % 2 == 1 ? h.tri : -2);
+  for (const TriangleKernels* table : tables_of(p)) {
+    const TriangleKernels& k = *table;
+    const RayBatch camera = paper_camera_rays(24);
+    std::vector<Ray> rays;
+    std::vector<int32_t> ignored;
+    for (std::size_t i = 0; i < camera.size(); ++i) {
+      Ray r = camera[i];
+      Hit h;
+      k.closest(soa.arrays(), 0, soa.size(), r, h);
+      if (h.hit() && i % 3 != 2) r.tmax = h.t;
+      rays.push_back(r);
+      ignored.push_back(h.hit() && i % 2 == 1 ? h.tri : -2);
+    }
+    std::vector<HitFilter> filters(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) filters[i] = {&ignore_id, &ignored[i]};
+    std::vector<uint8_t> batch(rays.size());
+    occluded_batch(k, soa.arrays(), 0, soa.size(), rays.data(), batch.data(), batch.size(), filters.data());
+    int occluded = 0, freed = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const bool want = k.occluded(soa.arrays(), 0, soa.size(), rays[i], &filters[i]);
+      ASSERT_EQ(batch[i], want ? 1 : 0) << "ray " << i;
+      occluded += want;
+      freed += !want && ignored[i] >= 0;
+    }
+    EXPECT_GT(occluded * 4, int(rays.size()));
+    EXPECT_GT(freed * 8, int(rays.size())) << "the filters should clear some rays";
   }
-  std::vector<HitFilter> filters(rays.size());
-  for (std::size_t i = 0; i < rays.size(); ++i) filters[i] = {&ignore_id, &ignored[i]};
-  std::vector<uint8_t> batch(rays.size());
-  occluded_batch(k, soa.arrays(), 0, soa.size(), rays.data(), batch.data(), batch.size(), filters.data());
-  int occluded = 0, freed = 0;
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    const bool want = k.occluded(soa.arrays(), 0, soa.size(), rays[i], &filters[i]);
-    ASSERT_EQ(batch[i], want ? 1 : 0) << "ray " << i;
-    occluded += want;
-    freed += !want && ignored[i] >= 0;
-  }
-  EXPECT_GT(occluded * 4, int(rays.size()));
-  EXPECT_GT(freed * 8, int(rays.size())) << "the filters should clear some rays";
 }
 
 // The float `mt` kernels read stored normals or form them per step from the edges
