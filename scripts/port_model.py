@@ -129,6 +129,7 @@ def loop_body(code, rays, tests, normals):
     # walk's, the shortest
     loops = [(addr, int(t.split()[1], 16)) for addr, t in code
              if re.fullmatch(r"j(?!mp)\w+\s+[0-9a-f]+", t) and int(t.split()[1], 16) < addr]
+
     def products(b):
         return sum(1 for t in b if t.startswith(("vmulps", "vfmadd", "vfmsub", "vfnmadd", "vfnmsub")))
 
@@ -138,7 +139,6 @@ def loop_body(code, rays, tests, normals):
         sys.exit("port_model: no loop found")
     # the walk loading the normal has the fewest products a step; the one forming it, its cross
     # product more (the shortest such loop: longer ones are copies the compiler unrolled)
-
     fewest = min(products(b) for b in bodies)
     chosen = [b for b in bodies if (products(b) == fewest) == (normals == "stored")]
     if not chosen:
@@ -189,8 +189,8 @@ def main():
     sym = symbol(a.isa, a.rays, a.pretest, shared)
     # rays from one origin with the sign bits test the step once for all of them (mt_any_ray_passes)
     # and leave the rays' own tests to an out-of-line call; else two mask tests a ray
-    tests = 1 if shared and a.rays > 1 and a.pretest == "sign" else 2 * a.rays
-    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays, tests, a.normals)
+    mask_tests = 1 if shared and a.rays > 1 and a.pretest == "sign" else 2 * a.rays
+    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays, mask_tests, a.normals)
     tests = ISAS[a.isa][1] * a.rays
     print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "
           f"({a.isa}, {a.rays} ray(s){', ' + a.origin + ' origin' if a.rays == 2 else ''}, {a.pretest} pre-test, "
