@@ -253,10 +253,8 @@ int run(const Options& o) {
                   : "");
   std::printf(
       "bvh: %d-wide, %u nodes, %u leaves (merged up to %d kernel steps), %.3f references per triangle "
-      "(spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, packet slot cull %s; build %.4f "
-      "s; "
-      "%.1f bytes/triangle "
-      "(nodes %.1f + triangles %.1f)\n",
+      "(spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, packet slot cull %s; "
+      "build %.4f s; %.1f bytes/triangle (nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), o.merge_steps, refs_per_tri,
       double(split_budget), bvh->tree().depth(), leaf_call_name(bvh->traversal().leaf_call),
       bvh->triangles().stores_normals() ? "stored" : "formed per step",

@@ -68,18 +68,28 @@ void closest_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t en
   if (k < n) closest_mt_float<V, P>(T, begin, end, rays[k], hits[k]);
 }
 
-// The any-hit steps of the open rays (bits of `done` clear) of a step where a lane may pass, out of
-// line (as mt_closest_steps); returns `done` with the rays that found a hit.
+// The any-hit steps of a step for the open rays (bits of `done` clear); returns `done` with the rays
+// that found a hit. Unrolled: left a loop, each ray's lanes are reloaded at every step.
 template <class V, int R>
-[[gnu::noinline, gnu::cold]] unsigned mt_any_hit_steps(const TriangleArrays& T, const auto& at, uint32_t i,
-                                                       const MtAnyHitRay<V>* q, const MtOrigin<V>& o,
-                                                       typename V::Mask active,
-                                                       const HitFilter* const* filters, unsigned done) {
+RAYVEC_INLINE unsigned mt_any_hit_open_steps(const TriangleArrays& T, const auto& at, uint32_t i,
+                                             const MtAnyHitRay<V>* q, const MtOrigin<V>& o,
+                                             typename V::Mask active, const HitFilter* const* filters,
+                                             unsigned done) {
+#pragma GCC unroll 8
   for (int k = 0; k < R; ++k)
     if (!(done >> k & 1u) &&
         mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q[k].r, o), active, q[k], filters[k]))
       done |= 1u << k;
   return done;
+}
+
+// The same out of line, for the rare steps where the group's sign test passes (as mt_closest_steps).
+template <class V, int R>
+[[gnu::noinline, gnu::cold]] unsigned mt_any_hit_steps(const TriangleArrays& T, const auto& at, uint32_t i,
+                                                       const MtAnyHitRay<V>* q, const MtOrigin<V>& o,
+                                                       typename V::Mask active,
+                                                       const HitFilter* const* filters, unsigned done) {
+  return mt_any_hit_open_steps<V, R>(T, at, i, q, o, active, filters, done);
 }
 
 // R rays from one origin (finite, the origin bit for bit) against [begin, end) for any hit, each
@@ -118,11 +128,7 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
             done = now;
           }
         } else {
-#pragma GCC unroll 8
-          for (int k = 0; k < R; ++k)
-            if (!(done >> k & 1u) &&
-                mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q[k].r, o), active, q[k], filters[k]))
-              done |= 1u << k;
+          done = mt_any_hit_open_steps<V, R>(T, at, i, q, o, active, filters, done);
         }
         return done == (1u << R) - 1u;
       });
