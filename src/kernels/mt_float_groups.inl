@@ -11,10 +11,19 @@ void closest_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32
                                  Hit* hits) {
   bool tmin_zero = true;
   for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
-  if (tmin_zero)
+  const float slack = P == MtPretest::sign_bits
+                          ? mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return rays[k]; })
+                          : -1.0f;
+  if (slack >= 0.0f) {
+    if (tmin_zero)
+      closest_mt_float_rays<V, true, R, P, true, true>(T, begin, end, rays, hits, slack);
+    else
+      closest_mt_float_rays<V, false, R, P, true, true>(T, begin, end, rays, hits, slack);
+  } else if (tmin_zero) {
     closest_mt_float_rays<V, true, R, P, true>(T, begin, end, rays, hits);
-  else
+  } else {
     closest_mt_float_rays<V, false, R, P, true>(T, begin, end, rays, hits);
+  }
 }
 
 // Whether rays[0..n) are all finite and start at rays[0]'s origin, bit for bit.
@@ -114,14 +123,18 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
     neg_lo[k] = V::broadcast(0.0f) - q[k].lo;
     open_hi[k] = q[k].hi;
   }
+  // the crossed group test where the magnitudes allow it (mt_crossed_slack)
+  const float slack = mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return *rays[k]; });
+  const bool crossed = slack >= 0.0f;
+  const V vslack = V::broadcast(slack);
   unsigned done = 0;
   mt_steps<V>(
       T, begin, end, [&](const auto& at, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
         const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
         if constexpr (P == MtPretest::sign_bits && V::W > 1) {
-          if (mt_any_ray_passes<V, false, R>(
-                  at, q, o, active,
-                  neg_lo, [&](int k) __attribute__((always_inline)) { return open_hi[k]; })) {
+          const auto hi = [&](int k) __attribute__((always_inline)) { return open_hi[k]; };
+          if (crossed ? mt_any_ray_passes_crossed<V, false, R>(at, q, o, active, vslack, neg_lo, hi)
+                      : mt_any_ray_passes<V, false, R>(at, q, o, active, neg_lo, hi)) {
             const unsigned now = mt_any_hit_steps<V, R>(T, at, i, q, o, active, filters, done);
             for (int k = 0; k < R; ++k)
               if ((now & ~done) >> k & 1u) open_hi[k] = V::broadcast(-__builtin_inff());

@@ -1,6 +1,8 @@
 #include "kernels/triangle_soa.h"
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -38,7 +40,8 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
 
   // every slot written once: triangles below count_, zero-area padding (id −1) above
   const std::int64_t slots = padded_, count = count_;
-#pragma omp parallel for schedule(static) if (slots >= kParallelFill)
+  float bound = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : bound) if (slots >= kParallelFill)
   for (std::int64_t i = 0; i < slots; ++i) {
     float* const slot = base + slot_offset(uint32_t(i));
     const uint32_t tri = i < count && !order.empty() ? order[std::size_t(i)] : uint32_t(i);
@@ -53,6 +56,11 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
     }
     const Vec3f p0 = mesh.vertex(tri, 0), p1 = mesh.vertex(tri, 1), p2 = mesh.vertex(tri, 2);
     const Vec3f rows[] = {p0, p2, p1};
+    for (const Vec3f& p : rows)
+      for (int a = 0; a < 3; ++a) {
+        const float m = std::fabs(p[a]);
+        bound = m <= bound ? bound : std::isnan(m) ? std::numeric_limits<float>::infinity() : m;
+      }
     const int first[] = {kV0, kV2, kV1};
     for (uint32_t r = 0; r < 3; ++r)
       for (uint32_t a = 0; a < 3; ++a) slot[(first[r] + a) * kBlock] = rows[r][int(a)];
@@ -64,8 +72,9 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
     }
   }
   const auto row = [&](int k) -> const float* { return base + std::size_t(k) * kBlock; };
-  arrays_ = TriangleArrays{row(kV0), row(kV0 + 1), row(kV0 + 2), row(kV1), row(kV1 + 1), row(kV1 + 2),
-                           row(kV2), row(kV2 + 1), row(kV2 + 2), ids,      ng_rows,      count_};
+  arrays_ =
+      TriangleArrays{row(kV0),     row(kV0 + 1), row(kV0 + 2), row(kV1), row(kV1 + 1), row(kV1 + 2), row(kV2),
+                     row(kV2 + 1), row(kV2 + 2), ids,          ng_rows,  count_,       bound};
 }
 
 std::size_t TriangleSoA::bytes() const {

@@ -70,6 +70,9 @@ struct TriangleArrays {
   // 2·kSlotBlock after it; null when not stored (the float `mt` kernels then form it per step)
   const float* ng;
   uint32_t count;  // slots in use (BVH padding slots included); [count, padded) is zero-area padding
+  // no vertex coordinate of any slot exceeds this in magnitude; +inf where unknown or where a
+  // coordinate is not finite (the kernels whose products it bounds then take their general path)
+  float coord_bound = __builtin_inff();
 };
 
 // Whether a TriangleSoA stores the normals ng (12 bytes a slot more) or leaves the kernels to
