@@ -333,7 +333,7 @@ template <class V, bool TminZero, int R, class At, class Q, class Hi>
 RAYVEC_INLINE bool mt_any_ray_passes(const At& at, const Q* q, const MtOrigin<V>& o, typename V::Mask active,
                                      const V* neg_lo, const Hi& hi) {
   V some = mt_sign_values<V, TminZero>(mt_numerator_values<V>(at, q[0].r, o), neg_lo[0], hi(0));
-#pragma GCC unroll 8
+#pragma GCC unroll 16
   for (int k = 1; k < R; ++k)
     some =
         and_bits(some, mt_sign_values<V, TminZero>(mt_numerator_values<V>(at, q[k].r, o), neg_lo[k], hi(k)));
@@ -388,7 +388,7 @@ RAYVEC_INLINE bool mt_any_ray_passes_crossed(const At& at, const Q* q, const MtO
   const MtOriginCross<V> x = mt_origin_cross<V>(at, o);
   const V slack5 = slack * V::broadcast(5.0f);
   V some = mt_crossed_sign_values<V, TminZero>(q[0].r, o, x, slack, slack5, neg_lo[0], hi(0));
-#pragma GCC unroll 8
+#pragma GCC unroll 16
   for (int k = 1; k < R; ++k)
     some = and_bits(some, mt_crossed_sign_values<V, TminZero>(q[k].r, o, x, slack, slack5, neg_lo[k], hi(k)));
   return any_sign_clear(active, some);
@@ -430,7 +430,7 @@ template <class V, bool TminZero, int R, MtPretest P, class At>
   for (int k = 0; k < R; ++k) mt_closest_step<V, TminZero, P>(at, i, q[k].r, o, active, neg_lo[k], q[k].b);
 }
 
-// R rays (1, 2, 4 or 8) against [begin, end): each triangle step is loaded once for all R rays. With
+// R rays (1, 2, 4, 8 or 16) against [begin, end): each triangle step is loaded once for all R rays. With
 // SharedOrigin (the rays' origins equal bit for bit) the origin part of each step is formed once.
 // Crossed (with SharedOrigin and the sign-bit pre-test): the group test mt_any_ray_passes_crossed,
 // widened by `slack` (mt_crossed_slack).

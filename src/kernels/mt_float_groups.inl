@@ -49,14 +49,15 @@ void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end
 }
 
 // Rays from one origin go through the kernel in groups of kOneOriginGroup<P> (closest_group_mt_float):
-// the origin part is then formed once for that many rays, and each triangle step is loaded once for
-// them. Eight with the sign pre-test; four with the ordered one, whose eight-ray loop spills more on
-// Intel's port model (benchmarks.md#decision-one-origin-pairs).
+// the origin part and the group test's cross products are then formed once for that many rays,
+// and each triangle step is loaded once for them. Sixteen with the sign pre-test (its one group
+// test a step grows cheaper per ray with the group); four with the ordered one, whose eight-ray loop
+// spills more on Intel's port model (benchmarks.md#decision-one-origin-pairs).
 template <MtPretest P>
-inline constexpr int kOneOriginGroup = P == MtPretest::ordered_compares ? 4 : 8;
+inline constexpr int kOneOriginGroup = P == MtPretest::ordered_compares ? 4 : 16;
 
-// rays[0..n): a group of kOneOriginGroup<P> (or four) at a time where they start at one origin, else
-// two at a time, an odd one alone.
+// rays[0..n): the largest group of kOneOriginGroup<P>, 8 or 4 rays that start at one origin, else two
+// at a time, an odd one alone.
 template <class V, MtPretest P = MtPretest::sign_bits>
 void closest_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays, Hit* hits,
                             std::size_t n) {
@@ -66,6 +67,9 @@ void closest_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t en
     if (k + G <= n && finite_one_origin(rays + k, G)) {
       closest_mt_float_one_origin<V, P, G>(T, begin, end, rays + k, hits + k);
       k += G;
+    } else if (G > 8 && k + 8 <= n && finite_one_origin(rays + k, 8)) {
+      closest_mt_float_one_origin<V, P, 8>(T, begin, end, rays + k, hits + k);
+      k += 8;
     } else if (G > 4 && k + 4 <= n && finite_one_origin(rays + k, 4)) {
       closest_mt_float_one_origin<V, P, 4>(T, begin, end, rays + k, hits + k);
       k += 4;
@@ -84,7 +88,7 @@ RAYVEC_INLINE unsigned mt_any_hit_open_steps(const TriangleArrays& T, const auto
                                              const MtAnyHitRay<V>* q, const MtOrigin<V>& o,
                                              typename V::Mask active, const HitFilter* const* filters,
                                              unsigned done) {
-#pragma GCC unroll 8
+#pragma GCC unroll 16
   for (int k = 0; k < R; ++k)
     if (!(done >> k & 1u) &&
         mt_any_hit_step<V>(T, i, mt_numerator_values<V>(at, q[k].r, o), active, q[k], filters[k]))
@@ -113,9 +117,12 @@ template <class V, int R>
 // disagree on has t within an ulp of lo = tmin·(1 − 2^-20) or hi = limit·(1 + 2^-20), which the
 // exact test (tmin <= t < limit) rejects either way. The scalar ISA keeps its per-ray branches:
 // every ray's values formed before one test took it twice as long.
-template <class V, int R, MtPretest P>
+// Crossed (with the sign-bit tables of the vector ISAs): the group test is
+// mt_any_ray_passes_crossed, widened by `slack` (mt_crossed_slack).
+template <class V, int R, MtPretest P, bool Crossed>
 unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end,
-                                      const Ray* const* rays, const HitFilter* const* filters) {
+                                      const Ray* const* rays, const HitFilter* const* filters, float slack) {
+  const V vslack = V::broadcast(slack);
   MtAnyHitRay<V> q[R];
   V neg_lo[R], open_hi[R];  // the group test's −lo and hi, hi at −inf once a ray is done
   for (int k = 0; k < R; ++k) {
@@ -123,17 +130,13 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
     neg_lo[k] = V::broadcast(0.0f) - q[k].lo;
     open_hi[k] = q[k].hi;
   }
-  // the crossed group test where the magnitudes allow it (mt_crossed_slack)
-  const float slack = mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return *rays[k]; });
-  const bool crossed = slack >= 0.0f;
-  const V vslack = V::broadcast(slack);
   unsigned done = 0;
   mt_steps<V>(
       T, begin, end, [&](const auto& at, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
         const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
         if constexpr (P == MtPretest::sign_bits && V::W > 1) {
           const auto hi = [&](int k) __attribute__((always_inline)) { return open_hi[k]; };
-          if (crossed ? mt_any_ray_passes_crossed<V, false, R>(at, q, o, active, vslack, neg_lo, hi)
+          if (Crossed ? mt_any_ray_passes_crossed<V, false, R>(at, q, o, active, vslack, neg_lo, hi)
                       : mt_any_ray_passes<V, false, R>(at, q, o, active, neg_lo, hi)) {
             const unsigned now = mt_any_hit_steps<V, R>(T, at, i, q, o, active, filters, done);
             for (int k = 0; k < R; ++k)
@@ -148,6 +151,19 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
   return done;
 }
 
+// R rays from one origin for any hit: the crossed group test where the magnitudes allow it
+// (mt_crossed_slack) and the table has the sign-bit pre-test on a vector ISA.
+template <class V, int R, MtPretest P>
+unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                      const Ray* const* rays, const HitFilter* const* filters) {
+  if constexpr (P == MtPretest::sign_bits && V::W > 1) {
+    const float slack = mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return *rays[k]; });
+    if (slack >= 0.0f)
+      return occluded_mt_float_one_origin<V, R, P, true>(T, begin, end, rays, filters, slack);
+  }
+  return occluded_mt_float_one_origin<V, R, P, false>(T, begin, end, rays, filters, 0.0f);
+}
+
 // Whether *rays[0..n) are all finite and start at rays[0]'s origin, bit for bit.
 RAYVEC_INLINE bool finite_one_origin(const Ray* const* rays, int n) {
   for (int k = 0; k < n; ++k)
@@ -155,25 +171,30 @@ RAYVEC_INLINE bool finite_one_origin(const Ray* const* rays, int n) {
   return true;
 }
 
-// Any-hit rays from one origin go through the kernel this many at a time: four on AVX-512, whose
+// Any-hit rays from one origin go through the kernel this many at a time: with the group test of
+// the vector ISAs' sign-bit tables sixteen, as the closest-hit groups; else four on AVX-512, whose
 // eight rays' constants (ten 16-lane vectors a ray) spill, eight elsewhere
 // (benchmarks.md#decision-one-origin-pairs).
-template <class V>
-inline constexpr int kOccludedOneOriginGroup = V::W >= 16 ? 4 : 8;
+template <class V, MtPretest P>
+inline constexpr int kOccludedOneOriginGroup = P == MtPretest::sign_bits&& V::W > 1 ? kMaxOccludedGroup
+                                                                                    : (V::W >= 16 ? 4 : 8);
 
-// *rays[0..n) (n <= kMaxOccludedGroup) for any hit, filters[k] (may be null) for rays[k]: a group of
-// kOccludedOneOriginGroup<V> (or four) at a time where they start at one origin, else one by one.
+// *rays[0..n) (n <= kMaxOccludedGroup) for any hit, filters[k] (may be null) for rays[k]: the largest
+// group of kOccludedOneOriginGroup<V, P>, 8 or 4 rays that start at one origin, else one by one.
 // Returns the bits of the occluded rays.
 template <class V, MtPretest P>
 unsigned occluded_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                  const Ray* const* rays, const HitFilter* const* filters, int n) {
-  constexpr int G = kOccludedOneOriginGroup<V>;
+  constexpr int G = kOccludedOneOriginGroup<V, P>;
   unsigned occluded = 0;
   int k = 0;
   while (k < n) {
     if (k + G <= n && finite_one_origin(rays + k, G)) {
       occluded |= occluded_mt_float_one_origin<V, G, P>(T, begin, end, rays + k, filters + k) << k;
       k += G;
+    } else if (G > 8 && k + 8 <= n && finite_one_origin(rays + k, 8)) {
+      occluded |= occluded_mt_float_one_origin<V, 8, P>(T, begin, end, rays + k, filters + k) << k;
+      k += 8;
     } else if (G > 4 && k + 4 <= n && finite_one_origin(rays + k, 4)) {
       occluded |= occluded_mt_float_one_origin<V, 4, P>(T, begin, end, rays + k, filters + k) << k;
       k += 4;

@@ -22,7 +22,7 @@ struct HitFilter {
 };
 
 // The most rays one TriangleKernels::occluded_group call takes.
-inline constexpr int kMaxOccludedGroup = 8;
+inline constexpr int kMaxOccludedGroup = 16;
 
 struct TriangleKernels {
   Isa isa;
