@@ -2,13 +2,13 @@
 """What a CPU model says the brute-force kernel's inner loop costs: a host of one vendor estimates
 another's throughput (llvm-mca's port model) where it cannot run there.
 
-    scripts/port_model.py [--isa avx512|avx2] [--rays 1|2|4|8] [--pretest ordered|sign]
+    scripts/port_model.py [--isa avx512|avx2] [--rays 1|2|4|8|16] [--pretest ordered|sign]
                           [--origin shared|separate] [--normals stored|formed] [--cpu NAME ...]
                           [--max-cycles C] [OBJECT ...]
 
 Disassembles the `closest_mt_float_rays` kernel for R rays (by default the group that rays from one
-origin, as a camera's are, go through with that pre-test: 4 with the ordered one, 8 with the sign
-bits; a pair is from one origin unless --origin separate) or, for --rays 1, `closest_mt_float_one`
+origin, as a camera's are, go through: 16, tested once a step by the crossed group test; a pair is
+from one origin unless --origin separate) or, for --rays 1, `closest_mt_float_one`
 (tmin = 0) of an ISA unit of a built tree, follows its
 triangle loop — of the walk over stored normals, or with --normals formed the one forming them — along the path a step takes when no lane passes the pre-test (every early-out taken:
 the path almost every step takes), and runs that straight-line body through `llvm-mca` for each
@@ -36,12 +36,12 @@ def default_object(isa):
     return f"build/src/CMakeFiles/rayvec_core_{isa}.dir/kernels/triangle_kernels_{isa}.cpp.o"
 
 
-def symbol(isa, rays, pretest, shared):
-    """closest_mt_float_rays<vfloat, true, R, P, shared> or closest_mt_float_one<vfloat, true, P>."""
+def symbol(isa, rays, pretest, shared, crossed):
+    """closest_mt_float_rays<vfloat, true, R, P, shared, crossed> or closest_mt_float_one<vfloat, true, P>."""
     ns = ISAS[isa][0]
     if rays > 1:
         return (f"_ZN6rayvec{ns}21closest_mt_float_raysINS0_6vfloatELb1ELi{rays}ELNS_9MtPretestE"
-                f"{PRETEST[pretest]}ELb{int(shared)}EEEvRKNS_14TriangleArraysEjjPKNS_3RayEPNS_3HitE")
+                f"{PRETEST[pretest]}ELb{int(shared)}ELb{int(crossed)}EEEvRKNS_14TriangleArraysEjjPKNS_3RayEPNS_3HitEf")
     return (f"_ZN6rayvec{ns}20closest_mt_float_oneINS0_6vfloatELb1ELNS_9MtPretestE"
             f"{PRETEST[pretest]}EEEvRKNS_14TriangleArraysEjjRKNS_3RayERNS_3HitE")
 
@@ -69,11 +69,12 @@ def disassembly(out):
     return code
 
 
-def loop_body(code, rays, tests, normals):
+def loop_body(code, rays, tests, normals, least_products):
     """The loop's straight-line path with every branch after a mask test taken (no lane passed), in
     the walk that reads stored normals or the one that forms them (the kernel has both); `tests`:
     the mask tests a step has on that path at least. A step of a ray has 16 products and FMAs with
-    stored normals: a loop with fewer than 12 a ray is not the triangle loop."""
+    stored normals (11 in the crossed group test): a loop with fewer than `least_products` a ray is
+    not the triangle loop."""
     index = {addr: i for i, (addr, _) in enumerate(code)}
     # a step's early-out: a conditional branch on a mask register (AVX-512), on a vtestps, or on sign
     # bits a vmovmskps took in the three instructions before it (AVX2)
@@ -134,7 +135,7 @@ def loop_body(code, rays, tests, normals):
         return sum(1 for t in b if t.startswith(("vmulps", "vfmadd", "vfmsub", "vfnmadd", "vfnmsub")))
 
     bodies = [b for b in (path(*span) for span in loops if mask_tests(*span) >= tests)
-              if b and products(b) >= 12 * rays]
+              if b and products(b) >= least_products * rays]
     if not bodies:
         sys.exit("port_model: no loop found")
     # the walk loading the normal has the fewest products a step; the one forming it, its cross
@@ -167,8 +168,8 @@ def main():
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("objects", nargs="*", metavar="OBJECT")
     p.add_argument("--isa", choices=sorted(ISAS), default="avx512", help="the kernel unit (default avx512)")
-    p.add_argument("--rays", type=int, choices=(1, 2, 4, 8),
-                   help="rays per triangle load (default: the one-origin group, 4 ordered, 8 sign)")
+    p.add_argument("--rays", type=int, choices=(1, 2, 4, 8, 16),
+                   help="rays per triangle load (default: the one-origin group, 16)")
     p.add_argument("--pretest", choices=sorted(PRETEST),
                    help="the pre-test form (default: what Intel runs, ordered on AVX-512, sign on AVX2)")
     p.add_argument("--origin", choices=("shared", "separate"), default="shared",
@@ -179,18 +180,20 @@ def main():
     p.add_argument("--max-cycles", type=float, help="exit 1 when the first model's cycles exceed this")
     a = p.parse_args()
     a.pretest = a.pretest or ("ordered" if a.isa == "avx512" else "sign")
-    a.rays = a.rays or (4 if a.pretest == "ordered" else 8)
-    if a.rays == 8 and a.pretest == "ordered":
-        p.error("--rays 8: the tables with the ordered pre-test group four rays at most (--pretest sign)")
+    a.rays = a.rays or 16
     if not shutil.which("llvm-mca"):
         print("port_model: llvm-mca not found (Debian: apt install llvm)", file=sys.stderr)
         sys.exit(77)
     shared = a.rays > 2 or a.origin == "shared"
-    sym = symbol(a.isa, a.rays, a.pretest, shared)
-    # rays from one origin with the sign bits test the step once for all of them (mt_any_ray_passes)
-    # and leave the rays' own tests to an out-of-line call; else two mask tests a ray
-    mask_tests = 1 if shared and a.rays > 1 and a.pretest == "sign" else 2 * a.rays
-    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays, mask_tests, a.normals)
+    # four rays and more from one origin test the step once for all of them (the crossed group test,
+    # mt_any_ray_passes_crossed: the mesh and rays of a benchmark never need the per-ray one), as a
+    # pair from one origin does with the sign bits, and leave the rays' own tests to an out-of-line
+    # call; else two mask tests a ray
+    crossed = shared and a.rays >= 4
+    sym = symbol(a.isa, a.rays, a.pretest, shared, crossed)
+    mask_tests = 1 if crossed or (shared and a.rays > 1 and a.pretest == "sign") else 2 * a.rays
+    body = loop_body(instructions(a.objects or [default_object(a.isa)], sym), a.rays, mask_tests, a.normals,
+                     10 if crossed else 12)
     tests = ISAS[a.isa][1] * a.rays
     print(f"loop: {len(body)} instructions, {tests} ray-triangle tests an iteration "
           f"({a.isa}, {a.rays} ray(s){', ' + a.origin + ' origin' if a.rays == 2 else ''}, {a.pretest} pre-test, "

@@ -432,8 +432,8 @@ template <class V, bool TminZero, int R, MtPretest P, class At>
 
 // R rays (1, 2, 4, 8 or 16) against [begin, end): each triangle step is loaded once for all R rays. With
 // SharedOrigin (the rays' origins equal bit for bit) the origin part of each step is formed once.
-// Crossed (with SharedOrigin and the sign-bit pre-test): the group test mt_any_ray_passes_crossed,
-// widened by `slack` (mt_crossed_slack).
+// Crossed (with SharedOrigin): the group test mt_any_ray_passes_crossed, widened by `slack`
+// (mt_crossed_slack), whichever pre-test P the rays' own steps take.
 template <class V, bool TminZero, int R, MtPretest P = MtPretest::sign_bits, bool SharedOrigin = false,
           bool Crossed = false>
 void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays, Hit* hits,
@@ -451,7 +451,7 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
           // the rays' steps unrolled: left a loop (g++ does for four rays and more), each ray's lanes
           // and best hit are reloaded from memory at every step
           const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
-          if constexpr (P == MtPretest::sign_bits) {
+          if constexpr (Crossed || P == MtPretest::sign_bits) {
             const auto hi = [&](int k) __attribute__((always_inline)) { return q[k].b.hi; };
             if (Crossed ? mt_any_ray_passes_crossed<V, TminZero, R>(at, q, o, active, vslack, neg_lo, hi)
                         : mt_any_ray_passes<V, TminZero, R>(at, q, o, active, neg_lo, hi))

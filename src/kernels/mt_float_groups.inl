@@ -11,19 +11,22 @@ void closest_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32
                                  Hit* hits) {
   bool tmin_zero = true;
   for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
-  const float slack = P == MtPretest::sign_bits
-                          ? mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return rays[k]; })
-                          : -1.0f;
-  if (slack >= 0.0f) {
-    if (tmin_zero)
-      closest_mt_float_rays<V, true, R, P, true, true>(T, begin, end, rays, hits, slack);
-    else
-      closest_mt_float_rays<V, false, R, P, true, true>(T, begin, end, rays, hits, slack);
-  } else if (tmin_zero) {
-    closest_mt_float_rays<V, true, R, P, true>(T, begin, end, rays, hits);
-  } else {
-    closest_mt_float_rays<V, false, R, P, true>(T, begin, end, rays, hits);
+  // the crossed group test for four rays and more (a pair's share of its cross products would cost
+  // more than it saves) where the magnitudes allow it
+  if constexpr (R >= 4) {
+    const float slack = mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return rays[k]; });
+    if (slack >= 0.0f) {
+      if (tmin_zero)
+        closest_mt_float_rays<V, true, R, P, true, true>(T, begin, end, rays, hits, slack);
+      else
+        closest_mt_float_rays<V, false, R, P, true, true>(T, begin, end, rays, hits, slack);
+      return;
+    }
   }
+  if (tmin_zero)
+    closest_mt_float_rays<V, true, R, P, true>(T, begin, end, rays, hits);
+  else
+    closest_mt_float_rays<V, false, R, P, true>(T, begin, end, rays, hits);
 }
 
 // Whether rays[0..n) are all finite and start at rays[0]'s origin, bit for bit.
@@ -48,20 +51,18 @@ void closest_pair_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end
   }
 }
 
-// Rays from one origin go through the kernel in groups of kOneOriginGroup<P> (closest_group_mt_float):
-// the origin part and the group test's cross products are then formed once for that many rays,
-// and each triangle step is loaded once for them. Sixteen with the sign pre-test (its one group
-// test a step grows cheaper per ray with the group); four with the ordered one, whose eight-ray loop
-// spills more on Intel's port model (benchmarks.md#decision-one-origin-pairs).
-template <MtPretest P>
-inline constexpr int kOneOriginGroup = P == MtPretest::ordered_compares ? 4 : 16;
+// Rays from one origin go through the kernel in groups of kOneOriginGroup (closest_group_mt_float):
+// the origin part and the crossed group test's cross products are then formed once for that many
+// rays, and each triangle step is loaded once for them; the group test a step grows cheaper per ray
+// with the group (benchmarks.md#decision-crossed-group-test).
+inline constexpr int kOneOriginGroup = 16;
 
-// rays[0..n): the largest group of kOneOriginGroup<P>, 8 or 4 rays that start at one origin, else two
+// rays[0..n): the largest group of kOneOriginGroup, 8 or 4 rays that start at one origin, else two
 // at a time, an odd one alone.
 template <class V, MtPretest P = MtPretest::sign_bits>
 void closest_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays, Hit* hits,
                             std::size_t n) {
-  constexpr int G = kOneOriginGroup<P>;
+  constexpr int G = kOneOriginGroup;
   std::size_t k = 0;
   while (k + 2 <= n) {
     if (k + G <= n && finite_one_origin(rays + k, G)) {
@@ -109,16 +110,15 @@ template <class V, int R>
 // triangle step loaded and its origin part formed once for all of them (as closest_mt_float_rays
 // does); *rays[k] with filters[k] (may be null). A ray drops out at its first hit, and the walk ends
 // once every ray has. Returns the bits of the occluded rays.
-// With the sign-bit tables of the vector ISAs the rays' steps are first tested together
-// (mt_any_ray_passes, as the closest-hit groups do; a ray that dropped out has its upper factor at
-// −inf, which fails every lane), and only where a lane may pass does each open ray run its ordered
-// any-hit step: one mask instruction a step instead of five a ray. The same hits: the sign test
-// reads lo·|det| and hi·|det| unrounded (fused) where the ordered one rounds them, and a lane the two
+// On the vector ISAs the rays' steps are first tested together — Crossed: by
+// mt_any_ray_passes_crossed, widened by `slack` (mt_crossed_slack); else, with the sign-bit tables,
+// by mt_any_ray_passes (as the closest-hit groups do; a ray that dropped out has its upper factor at
+// −inf, which fails every lane) — and only where a lane may pass does each open ray run its ordered
+// any-hit step: one mask instruction a step instead of five a ray. The same hits: the group tests
+// read lo·|det| and hi·|det| unrounded (fused) where the ordered one rounds them, and a lane the two
 // disagree on has t within an ulp of lo = tmin·(1 − 2^-20) or hi = limit·(1 + 2^-20), which the
 // exact test (tmin <= t < limit) rejects either way. The scalar ISA keeps its per-ray branches:
 // every ray's values formed before one test took it twice as long.
-// Crossed (with the sign-bit tables of the vector ISAs): the group test is
-// mt_any_ray_passes_crossed, widened by `slack` (mt_crossed_slack).
 template <class V, int R, MtPretest P, bool Crossed>
 unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                       const Ray* const* rays, const HitFilter* const* filters, float slack) {
@@ -134,7 +134,7 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
   mt_steps<V>(
       T, begin, end, [&](const auto& at, uint32_t i, typename V::Mask active) __attribute__((always_inline)) {
         const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
-        if constexpr (P == MtPretest::sign_bits && V::W > 1) {
+        if constexpr (Crossed || (P == MtPretest::sign_bits && V::W > 1)) {
           const auto hi = [&](int k) __attribute__((always_inline)) { return open_hi[k]; };
           if (Crossed ? mt_any_ray_passes_crossed<V, false, R>(at, q, o, active, vslack, neg_lo, hi)
                       : mt_any_ray_passes<V, false, R>(at, q, o, active, neg_lo, hi)) {
@@ -151,12 +151,12 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
   return done;
 }
 
-// R rays from one origin for any hit: the crossed group test where the magnitudes allow it
-// (mt_crossed_slack) and the table has the sign-bit pre-test on a vector ISA.
+// R rays from one origin for any hit: on the vector ISAs the crossed group test where the
+// magnitudes allow it (mt_crossed_slack).
 template <class V, int R, MtPretest P>
 unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                       const Ray* const* rays, const HitFilter* const* filters) {
-  if constexpr (P == MtPretest::sign_bits && V::W > 1) {
+  if constexpr (V::W > 1) {
     const float slack = mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return *rays[k]; });
     if (slack >= 0.0f)
       return occluded_mt_float_one_origin<V, R, P, true>(T, begin, end, rays, filters, slack);
@@ -171,21 +171,18 @@ RAYVEC_INLINE bool finite_one_origin(const Ray* const* rays, int n) {
   return true;
 }
 
-// Any-hit rays from one origin go through the kernel this many at a time: with the group test of
-// the vector ISAs' sign-bit tables sixteen, as the closest-hit groups; else four on AVX-512, whose
-// eight rays' constants (ten 16-lane vectors a ray) spill, eight elsewhere
-// (benchmarks.md#decision-one-origin-pairs).
-template <class V, MtPretest P>
-inline constexpr int kOccludedOneOriginGroup = P == MtPretest::sign_bits&& V::W > 1 ? kMaxOccludedGroup
-                                                                                    : (V::W >= 16 ? 4 : 8);
+// Any-hit rays from one origin go through the kernel this many at a time: on the vector ISAs, whose
+// groups have the crossed test, as many as the closest-hit groups; on the scalar one eight.
+template <class V>
+inline constexpr int kOccludedOneOriginGroup = V::W > 1 ? kMaxOccludedGroup : 8;
 
 // *rays[0..n) (n <= kMaxOccludedGroup) for any hit, filters[k] (may be null) for rays[k]: the largest
-// group of kOccludedOneOriginGroup<V, P>, 8 or 4 rays that start at one origin, else one by one.
+// group of kOccludedOneOriginGroup<V>, 8 or 4 rays that start at one origin, else one by one.
 // Returns the bits of the occluded rays.
 template <class V, MtPretest P>
 unsigned occluded_group_mt_float(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                  const Ray* const* rays, const HitFilter* const* filters, int n) {
-  constexpr int G = kOccludedOneOriginGroup<V, P>;
+  constexpr int G = kOccludedOneOriginGroup<V>;
   unsigned occluded = 0;
   int k = 0;
   while (k < n) {
