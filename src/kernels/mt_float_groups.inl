@@ -5,28 +5,42 @@
 // hit). Every ray gets bit for bit the hit it gets alone. Included by triangle_kernels_<isa>.cpp
 // inside namespace rayvec::<isa>, after mt_float.inl; no std:: calls here, as there.
 
-// R rays from one origin (bit for bit), every one finite.
+// R rays from one origin (bit for bit), every one finite, each ray's tests of every step its own
+// (the ordered or sign-bit group of before the crossed test).
+template <class V, MtPretest P, int R>
+void closest_mt_float_one_origin_per_ray(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                                         const Ray* rays, Hit* hits) {
+  bool tmin_zero = true;
+  for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
+  if (tmin_zero)
+    closest_mt_float_rays<V, true, R, P, true>(T, begin, end, rays, hits);
+  else
+    closest_mt_float_rays<V, false, R, P, true>(T, begin, end, rays, hits);
+}
+
+// R rays from one origin (bit for bit), every one finite: four rays and more take the crossed group
+// test where the magnitudes allow it (a pair's share of its cross products would cost more than it
+// saves), else go four at a time (larger groups of per-ray tests spill: not worth their code for so
+// rare an input).
 template <class V, MtPretest P, int R>
 void closest_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end, const Ray* rays,
                                  Hit* hits) {
-  bool tmin_zero = true;
-  for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
-  // the crossed group test for four rays and more (a pair's share of its cross products would cost
-  // more than it saves) where the magnitudes allow it
   if constexpr (R >= 4) {
     const float slack = mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return rays[k]; });
     if (slack >= 0.0f) {
+      bool tmin_zero = true;
+      for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
       if (tmin_zero)
         closest_mt_float_rays<V, true, R, P, true, true>(T, begin, end, rays, hits, slack);
       else
         closest_mt_float_rays<V, false, R, P, true, true>(T, begin, end, rays, hits, slack);
       return;
     }
+    for (int k = 0; k < R; k += 4)
+      closest_mt_float_one_origin_per_ray<V, P, 4>(T, begin, end, rays + k, hits + k);
+  } else {
+    closest_mt_float_one_origin_per_ray<V, P, R>(T, begin, end, rays, hits);
   }
-  if (tmin_zero)
-    closest_mt_float_rays<V, true, R, P, true>(T, begin, end, rays, hits);
-  else
-    closest_mt_float_rays<V, false, R, P, true>(T, begin, end, rays, hits);
 }
 
 // Whether rays[0..n) are all finite and start at rays[0]'s origin, bit for bit.
@@ -152,7 +166,7 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
 }
 
 // R rays from one origin for any hit: on the vector ISAs the crossed group test where the
-// magnitudes allow it (mt_crossed_slack).
+// magnitudes allow it, else four at a time (as closest_mt_float_one_origin).
 template <class V, int R, MtPretest P>
 unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                       const Ray* const* rays, const HitFilter* const* filters) {
@@ -160,6 +174,13 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
     const float slack = mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return *rays[k]; });
     if (slack >= 0.0f)
       return occluded_mt_float_one_origin<V, R, P, true>(T, begin, end, rays, filters, slack);
+    if constexpr (R > 4) {
+      unsigned occluded = 0;
+      for (int k = 0; k < R; k += 4)
+        occluded |= occluded_mt_float_one_origin<V, 4, P, false>(T, begin, end, rays + k, filters + k, 0.0f)
+                    << k;
+      return occluded;
+    }
   }
   return occluded_mt_float_one_origin<V, R, P, false>(T, begin, end, rays, filters, 0.0f);
 }
