@@ -343,13 +343,13 @@ RAYVEC_INLINE bool mt_any_ray_passes(const At& at, const Q* q, const MtOrigin<V>
 // The same group test, cheaper where the rays' origin is shared: with s = v0 − o, the numerators
 // u·det = −(e2 · (s × d)) and v·det = e1 · (s × d) are also −d · (e2 × s) and d · (e1 × s) (the
 // triple product turned around), so the two cross products e2 × s and e1 × s are formed once a
-// step for the whole group (MtOriginCross) and each ray pays three dot products (det, u, v): 9
-// multiply/adds a ray instead of 15. Rounded differently from the per-ray numerators, so the edge
-// tests are widened by `slack` (mt_crossed_slack), a bound on the difference of the two roundings:
-// every lane that passes a ray's ordered tests (closed edges, tmin <= t < best) passes this one.
-// det and t·det are those of the per-ray numerators, bit for bit; the edge sum u + v <= 1 is left to
-// the per-ray step (the lanes it alone rejects are about as rare as hits, and it costs three adds a
-// ray). Where a lane passes, each ray's step runs as alone, as after mt_any_ray_passes.
+// step for the whole group (MtOriginCross) and each ray pays three dot products (det, u, v): with
+// the edge sum and depth tests 11 multiply/adds a ray instead of 16. Rounded differently from the
+// per-ray numerators, so u and v are widened by `slack` (mt_crossed_slack), a bound on the
+// difference of the two roundings, and the edge sum by 2^-20·|det| and three slacks more: every lane
+// that passes a ray's ordered tests (closed edges, tmin <= t < best) passes this one. det and t·det
+// are those of the per-ray numerators, bit for bit. Where a lane passes, each ray's step runs as
+// alone, as after mt_any_ray_passes.
 template <class V>
 struct MtOriginCross {
   V ax, ay, az;  // e2 × s
@@ -365,7 +365,12 @@ RAYVEC_INLINE MtOriginCross<V> mt_origin_cross(const At& at, const MtOrigin<V>& 
           fmsub(e1y, o.sz, e1z * o.sy), fmsub(e1z, o.sx, e1x * o.sz), fmsub(e1x, o.sy, e1y * o.sx)};
 }
 
-// The values whose sign bits the crossed test reads for the ray `r` (clear: the lane may pass).
+// The values whose sign bits the crossed test reads for the ray `r` (clear: the lane may pass):
+// u and v each within slack/2 of the ray's own u·|det| and v·|det| before their slack is added (so
+// at least slack/2 above zero where those pass, at most 1.5·slack above them); the edge sum
+// |det|·(1 + 2^-20) + 5·slack − u − v then stays above zero wherever the ray's own (v − u)·|det| <=
+// |det| holds, its roundings (a few 2^-24 of |det| and of the slacks) inside the 2^-20·|det| and
+// the two spare slacks; the depth values are the per-ray pre-test's (mt_sign_values).
 template <class V, bool TminZero>
 RAYVEC_INLINE V mt_crossed_sign_values(const RayLanes<V>& r, const MtOrigin<V>& o, const MtOriginCross<V>& x,
                                        V slack, V slack5, V neg_lo, V hi) {
@@ -402,7 +407,7 @@ RAYVEC_INLINE bool mt_any_ray_passes_crossed(const At& at, const Q* q, const MtO
 // errors times |e|): together within 120·2^-24·B·(B + |o|)·D < 2^-17·B·(B + |o|)·D. Twice that,
 // plus 2^-100 for the absolute errors of underflow, rounded up to a float. Negative where the
 // products could overflow (a coordinate not finite, or B·(B + |o|)·max(D, 1) near 2^128): the
-// group then takes the per-ray test.
+// group then takes the per-ray tests, four rays at a time.
 // ray(k): the k-th ray of the group.
 template <class RayAt>
 RAYVEC_INLINE float mt_crossed_slack(const TriangleArrays& T, int n, const RayAt& ray) {
