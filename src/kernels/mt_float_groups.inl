@@ -5,8 +5,8 @@
 // hit). Every ray gets bit for bit the hit it gets alone. Included by triangle_kernels_<isa>.cpp
 // inside namespace rayvec::<isa>, after mt_float.inl; no std:: calls here, as there.
 
-// R rays from one origin (bit for bit), every one finite, each ray's tests of every step its own
-// (the ordered or sign-bit group of before the crossed test).
+// R rays from one origin (bit for bit), every one finite, each ray testing every step itself: with
+// the sign bits ANDed over the group (mt_any_ray_passes), with the ordered compares ray by ray.
 template <class V, MtPretest P, int R>
 void closest_mt_float_one_origin_per_ray(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                          const Ray* rays, Hit* hits) {
