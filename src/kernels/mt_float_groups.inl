@@ -5,14 +5,19 @@
 // hit). Every ray gets bit for bit the hit it gets alone. Included by triangle_kernels_<isa>.cpp
 // inside namespace rayvec::<isa>, after mt_float.inl; no std:: calls here, as there.
 
+// Whether rays[0..n) all start at t = 0 (the kernels' lower depth test then needs no product).
+RAYVEC_INLINE bool tmin_all_zero(const Ray* rays, int n) {
+  for (int k = 0; k < n; ++k)
+    if (rays[k].tmin != 0.0f) return false;
+  return true;
+}
+
 // R rays from one origin (bit for bit), every one finite, each ray testing every step itself: with
 // the sign bits ANDed over the group (mt_any_ray_passes), with the ordered compares ray by ray.
 template <class V, MtPretest P, int R>
 void closest_mt_float_one_origin_per_ray(const TriangleArrays& T, uint32_t begin, uint32_t end,
                                          const Ray* rays, Hit* hits) {
-  bool tmin_zero = true;
-  for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
-  if (tmin_zero)
+  if (tmin_all_zero(rays, R))
     closest_mt_float_rays<V, true, R, P, true>(T, begin, end, rays, hits);
   else
     closest_mt_float_rays<V, false, R, P, true>(T, begin, end, rays, hits);
@@ -28,9 +33,7 @@ void closest_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, uint32
   if constexpr (R >= 4) {
     const float slack = mt_crossed_slack(T, R, [rays](int k) -> const Ray& { return rays[k]; });
     if (slack >= 0.0f) {
-      bool tmin_zero = true;
-      for (int k = 0; k < R; ++k) tmin_zero = tmin_zero && rays[k].tmin == 0.0f;
-      if (tmin_zero)
+      if (tmin_all_zero(rays, R))
         closest_mt_float_rays<V, true, R, P, true, true>(T, begin, end, rays, hits, slack);
       else
         closest_mt_float_rays<V, false, R, P, true, true>(T, begin, end, rays, hits, slack);
