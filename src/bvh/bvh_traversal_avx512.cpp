@@ -15,6 +15,7 @@ constexpr Isa kThisIsa = Isa::avx512;
 #include "bvh/single_ray_traversal.inl"
 #include "kernels/moller_trumbore.inl"
 #include "kernels/mt_float.inl"
+#include "kernels/mt_float_rays.inl"
 #include "kernels/watertight.inl"
 #include "bvh/packet_slot_cull.inl"
 #include "bvh/packet_leaf.inl"

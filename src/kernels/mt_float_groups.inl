@@ -3,7 +3,7 @@
 // start at one origin (a camera's, a visibility study's) share each step's triangle loads and its
 // origin part (mt_origin_values) in groups; others go two at a time (closest) or one by one (any
 // hit). Every ray gets bit for bit the hit it gets alone. Included by triangle_kernels_<isa>.cpp
-// inside namespace rayvec::<isa>, after mt_float.inl; no std:: calls here, as there.
+// inside namespace rayvec::<isa>, after mt_float_rays.inl; no std:: calls here, as there.
 
 // Whether rays[0..n) all start at t = 0 (the kernels' lower depth test then needs no product).
 RAYVEC_INLINE bool tmin_all_zero(const Ray* rays, int n) {
@@ -153,8 +153,12 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
         const MtOrigin<V> o = mt_origin_values<V>(at, q[0].r);
         if constexpr (Crossed || (P == MtPretest::sign_bits && V::W > 1)) {
           const auto hi = [&](int k) __attribute__((always_inline)) { return open_hi[k]; };
-          if (Crossed ? mt_any_ray_passes_crossed<V, false, R>(at, q, o, active, vslack, neg_lo, hi)
-                      : mt_any_ray_passes<V, false, R>(at, q, o, active, neg_lo, hi)) {
+          bool passes;
+          if constexpr (Crossed)
+            passes = mt_any_ray_passes_crossed<V, false, R>(at, q, o, active, vslack, neg_lo, hi);
+          else
+            passes = mt_any_ray_passes<V, false, R>(at, q, o, active, neg_lo, hi);
+          if (passes) {
             const unsigned now = mt_any_hit_steps<V, R>(T, at, i, q, o, active, filters, done);
             for (int k = 0; k < R; ++k)
               if ((now & ~done) >> k & 1u) open_hi[k] = V::broadcast(-__builtin_inff());

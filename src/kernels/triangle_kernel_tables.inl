@@ -1,6 +1,7 @@
 // The function tables of one ISA unit: every intersector instantiated over that unit's vector types.
 // Included last by triangle_kernels_<isa>.cpp, inside namespace rayvec::<isa>, after it defines
-// kThisIsa and includes the kernel bodies (moller_trumbore.inl, mt_float.inl, watertight.inl).
+// kThisIsa and includes the kernel bodies (moller_trumbore.inl, mt_float.inl, mt_float_rays.inl,
+// mt_float_groups.inl, watertight.inl).
 
 namespace {
 // constinit: no dynamic initialisation runs in an ISA unit (it would run on CPUs without the ISA).
