@@ -2,10 +2,10 @@
 // for all of them, and for rays from one origin its origin part formed once and a group test (the
 // sign bits ANDed over the rays, or the crossed test with the cross products formed once a step)
 // that settles almost every step for the whole group in one test: no ray can hit there. Every ray
-// gets bit for bit the hit it gets alone. Written once over a vector type V and compiled per ISA: included by
-// triangle_kernels_<isa>.cpp (for mt_float_groups.inl's tables) and bvh_traversal_avx512.cpp (its
-// single-ray leaf, R = 1) inside namespace rayvec::<isa>, after mt_float.inl, whose arithmetic it
-// uses. No std:: calls here, as there.
+// gets bit for bit the hit it gets alone. Written once over a vector type V and compiled per ISA:
+// included by triangle_kernels_<isa>.cpp (for mt_float_groups.inl's tables) and
+// bvh_traversal_avx512.cpp (its single-ray leaf, R = 1) inside namespace rayvec::<isa>, after
+// mt_float.inl, whose arithmetic it uses. No std:: calls here, as there.
 
 // Per-lane best hit of closest_mt_float_rays, plus the pre-test threshold `hi`, which is shared by all
 // lanes: the nearest t found so far in ANY lane, widened. A triangle behind the ray's nearest hit
