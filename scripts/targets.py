@@ -15,12 +15,16 @@ Sections (each can be skipped; one whose tool is missing is skipped with the rea
            sphere4k, WusonOBJ (Debian's assimp-testmodels) and the 1M sphere at AVX2 and AVX-512,
            the 1M sphere also with its normals stored (`--stored-normals 1`) against the default;
            bytes per triangle of each tree and of assimp's regr01 (long triangles)
+  choices  the defaults that depend on the CPU's vendor or the mesh's size (`rayvec info` prints
+           their rules), each option against its alternative on meshes either side of its line, per
+           ISA (`bench rays --vs-embree`, 512x512, ratio of the ratios to Embree per round): node
+           width, leaf call, packet slot cull — the measurements their Decisions rest on, on this CPU
   povray   every scenes/*.json and the 1M sphere's scene, `rayvec render --spp 1 --threads 1`
            against POV-Ray 3.7 on the converted scene (scripts/scene_to_pov.py), CPU time of the
            whole processes, alternating rounds; RMSE of the two pictures
 
 CPU times are user + system time of the whole process (wait4). A fuzzer or build on another core
-moves them little; run nothing on the measured core. A full run takes about 15 minutes at 4 rounds.
+moves them little; run nothing on the measured core. A full run takes about 25 minutes at 4 rounds.
 """
 import argparse
 import datetime
@@ -37,7 +41,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ASSIMP = "/usr/share/assimp/models/OBJ"
 SETS = ("primary", "primary_packet", "shadow", "shadow_packet", "incoherent")
 SET_NAMES = "primary / packets / shadow / shadow packets / incoherent"
-SECTIONS = ("startup", "brute", "obj", "embree", "povray")
+SECTIONS = ("startup", "brute", "obj", "embree", "choices", "povray")
 
 
 def log(message):
@@ -237,6 +241,52 @@ class Targets:
         worst = max(b for _, b in byte_counts)
         self.row("BVH + triangle rows, bytes per triangle", "≤ 64",
                  ", ".join(f"{n} {b:.1f}" for n, b in byte_counts), worst <= 64)
+
+    # --- choices ---------------------------------------------------------------------------------
+    # (option, its two values, the JSON key that reports it, meshes, Decision): each default is measured
+    # against its alternative on a mesh on each side of its line (32,768 triangles for the node width
+    # and the leaf call, 2^18 for the slot cull; Intel's AVX-512 takes 16-wide nodes at every size).
+    CHOICES = (("--bvh-width", ("8", "16"), "bvh_width", ("sphere4k", "sphere1m"), "decision-node-width"),
+               ("--direct-leaf", ("1", "2"), "leaf_call", ("sphere4k", "sphere1m"), "decision-inlined-leaf"),
+               ("--slot-cull", ("0", "1"), "packet_slot_cull", ("sphere250k", "sphere1m"),
+                "decision-packet-slot-cull"))
+
+    def choice_mesh(self, name):
+        if name == "sphere1m":
+            return self.sphere1m()
+        rings = {"sphere4k": ("32", "64"), "sphere250k": ("354", "354")}[name]
+        return self.make(f"{name}.obj", [sys.executable, f"{ROOT}/scripts/make_bumpy_sphere.py", f"{name}.obj",
+                                         "--rings", rings[0], "--segments", rings[1]])
+
+    def choices(self):
+        if subprocess.run([self.bin, "bench", "rays", f"{ROOT}/scenes/models/cube.obj", "--vs-embree", "--size",
+                           "4x4", "--builds", "1", "--repeats", "1"], capture_output=True).returncode != 0:
+            log("targets: choices skipped: this build has no Embree rival (libembree-dev, then rebuild)")
+            return
+        isas = ["avx2"] + (["avx512"] if self.has_avx512 else [])
+        bench = [self.bin, "bench", "rays", "--vs-embree", "--json", "--threads", "1", "--builds", "1",
+                 "--repeats", "3", "--size", "512x512"]
+        for option, values, key, names, anchor in self.CHOICES:
+            cells = []
+            for isa in isas:
+                for name in names:
+                    mesh = self.choice_mesh(name)
+                    default = json.loads(run([self.bin, "bench", "rays", mesh, "--json", "--builds", "1",
+                                              "--repeats", "1", "--size", "16x16", "--isa", isa])[0])[key]
+                    runs = {v: [] for v in values}
+                    for r in range(self.rounds):
+                        log(f"targets: {option} {'|'.join(values)} on {name} --isa {isa}, round {r + 1} of "
+                            f"{self.rounds}")
+                        for v in (values if r % 2 == 0 else values[::-1]):
+                            runs[v].append(json.loads(run(bench[:3] + [mesh] + bench[3:] + ["--isa", isa,
+                                                                                            option, v])[0]))
+                    a, b = runs[values[0]], runs[values[1]]
+                    rel = [median([to_embree(y, k) / to_embree(x, k) for x, y in zip(a, b)]) for k in SETS]
+                    cells.append(f"{isa} {name} (default {json.dumps(default)}) " +
+                                 " / ".join(f"{x:.3f}" for x in rel))
+            self.details.append(f"`bench rays --vs-embree --size 512x512 {option} {values[1]}` relative to "
+                                f"`{option} {values[0]}`, median of {self.rounds} alternating rounds, {SET_NAMES}: "
+                                + "; ".join(cells) + f" (docs/benchmarks.md#{anchor}).")
 
     # --- povray ----------------------------------------------------------------------------------
     def povray(self):
