@@ -1,135 +1,35 @@
-// ISA and version equivalence: every kernel version (original and optimized scalar baselines,
-// vectorized per ISA) returns the same triangle ids, with the scalar ISA as the reference (as
-// mitsuba tests every vector backend against its scalar one). ISAs this CPU lacks are skipped by name.
+// ISA equivalence: every kernel vectorized per ISA returns the same triangle ids as the scalar ISA,
+// the reference (as mitsuba tests every vector backend against its scalar one); and every batched
+// path (closest_batch, occluded_batch, the groups of rays from one origin, stored or formed normals)
+// the same hits, bit for bit, as one call per ray on the same ISA. ISAs this CPU lacks are skipped
+// by name. The scenes: kernel_scenes.h.
 //
-// `paper` has no FMA anywhere, so ids, t, u and v must match bit for bit — including the paper
-// baselines. `mt` and `mt64` use FMA in the SIMD kernels but not in the scalar ISA, so a ray within
-// rounding of an edge shared by two triangles may pick the neighbour: such an id mismatch is allowed
-// only when both hits exist, their t agree within a few ulp (kUlps) and the hit lies within 1e-5
-// (barycentric) of an edge; these cases are counted and must be rare on random rays. Rays aimed
-// exactly at shared edges (the grid) may also slip through the crack on one side (`mt` is not
-// watertight), again only within 1e-5 of an edge.
+// `paper` has no FMA anywhere, so ids, t, u and v must match bit for bit. `mt` and `mt64` use FMA in the SIMD
+// kernels but not in the scalar ISA, so a ray within rounding of an edge shared by two triangles may pick the
+// neighbour: such an id mismatch is allowed only when both hits exist, their t agree within a few ulp (kUlps)
+// and the hit lies within 1e-5 (barycentric) of an edge; these cases are counted and must be rare on random
+// rays. Rays aimed exactly at shared edges (the grid) may also slip through the crack on one side (`mt` is
+// not watertight), again only within 1e-5 of an edge.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include "bench/paper_scene.h"
 #include "kernels/closest_batch.h"
+#include "kernels/kernel_scenes.h"
 #include "kernels/triangle_kernels.h"
-#include "bench/paper_baselines.h"
 #include "kernels/triangle_soa.h"
-#include "geometry/triangle_mesh.h"
 
 namespace rayvec {
 namespace {
 
-struct Scene {
-  const char* name;
-  TriangleMesh mesh;
-  std::vector<Ray> rays;
-  bool edge_aimed = false;  // rays aimed exactly at shared edges: edge cases are not rare
-};
-
-Vec3f random_point(SplitMix64& rng, float lo, float hi) {
-  return {lo + (hi - lo) * rng.unit_float(), lo + (hi - lo) * rng.unit_float(),
-          lo + (hi - lo) * rng.unit_float()};
-}
-
-Vec3f random_direction(SplitMix64& rng) {
-  for (;;) {
-    const Vec3f d = random_point(rng, -1.0f, 1.0f);
-    const float l2 = dot(d, d);
-    if (l2 > 0.01f && l2 <= 1.0f) return d;
-  }
-}
-
-// 400 random unit-cube triangles (plus a tiny and a degenerate one), random rays with some
-// [tmin, tmax] windows.
-Scene random_scene() {
-  Scene s{"random", paper_triangles(400, 7), {}};
-  s.mesh.add_triangle({0.3f, 0.3f, 0.3f}, {0.3001f, 0.3f, 0.3f}, {0.3f, 0.3001f, 0.3f});
-  s.mesh.add_triangle({0.1f, 0.1f, 0.1f}, {0.2f, 0.2f, 0.2f}, {0.3f, 0.3f, 0.3f});
-  SplitMix64 rng(11);
-  for (int i = 0; i < 3000; ++i) {
-    Ray r{random_point(rng, -0.5f, 1.5f), random_direction(rng)};
-    if (i % 3 == 1) r.tmin = 0.2f * rng.unit_float();
-    if (i % 3 == 2) r.tmax = 0.3f + rng.unit_float();
-    s.rays.push_back(r);
-  }
-  const RayBatch camera = paper_camera_rays(30);
-  for (std::size_t i = 0; i < camera.size(); ++i) s.rays.push_back(camera[i]);
-  return s;
-}
-
-// A closed UV sphere (shared vertices, so every edge is shared by two triangles): rays from inside
-// in random directions, and from outside towards random points inside.
-Scene sphere_scene() {
-  Scene s{"sphere", {}, {}};
-  const int rings = 24, segments = 48;
-  const float pi = 3.14159265358979f;
-  s.mesh.positions.push_back({0, 0, 1});
-  for (int r = 1; r < rings; ++r)
-    for (int k = 0; k < segments; ++k) {
-      const float th = pi * r / rings, ph = 2 * pi * k / segments;
-      s.mesh.positions.push_back({std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)});
-    }
-  s.mesh.positions.push_back({0, 0, -1});
-  const uint32_t south = uint32_t(s.mesh.positions.size() - 1);
-  auto at = [&](int r, int k) { return uint32_t(1 + (r - 1) * segments + (k % segments)); };
-  for (int k = 0; k < segments; ++k) s.mesh.triangles.push_back({0, at(1, k), at(1, k + 1)});
-  for (int r = 1; r + 1 < rings; ++r)
-    for (int k = 0; k < segments; ++k) {
-      s.mesh.triangles.push_back({at(r, k), at(r + 1, k), at(r + 1, k + 1)});
-      s.mesh.triangles.push_back({at(r, k), at(r + 1, k + 1), at(r, k + 1)});
-    }
-  for (int k = 0; k < segments; ++k)
-    s.mesh.triangles.push_back({at(rings - 1, k), south, at(rings - 1, k + 1)});
-  SplitMix64 rng(23);
-  for (int i = 0; i < 3000; ++i) {
-    const Vec3f inside = random_point(rng, -0.5f, 0.5f);
-    if (i % 2 == 0) {
-      s.rays.push_back(Ray{inside, random_direction(rng)});
-    } else {
-      const Vec3f d = random_direction(rng);
-      const Vec3f o = inside - d * (3.0f / length(d));
-      s.rays.push_back(Ray{o, inside - o});
-    }
-  }
-  return s;
-}
-
-// A 16×16 grid of quads (two triangles each) in the plane z = 0.5, rays from above aimed at points on
-// grid lines and diagonals — the shared edges themselves.
-Scene grid_scene() {
-  Scene s{"grid", {}, {}, true};
-  const int n = 16;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) s.mesh.positions.push_back({float(i) / n, float(j) / n, 0.5f});
-  auto at = [&](int i, int j) { return uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      s.mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      s.mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  SplitMix64 rng(5);
-  for (int k = 0; k < 2000; ++k) {
-    const float a = float(1 + k % (n - 1)) / n, b = 0.05f + 0.9f * rng.unit_float();
-    const Vec3f target =
-        k % 3 == 0 ? Vec3f{a, b, 0.5f} : (k % 3 == 1 ? Vec3f{b, a, 0.5f} : Vec3f{b, b, 0.5f});
-    const Vec3f o = random_point(rng, 0.0f, 1.0f) + Vec3f{0, 0, 1.0f};
-    s.rays.push_back(Ray{o, target - o});
-  }
-  return s;
-}
-
-std::vector<Hit> trace(const TriangleKernels& k, const TriangleSoA& soa, const std::vector<Ray>& rays) {
-  std::vector<Hit> hits(rays.size());
-  for (std::size_t i = 0; i < rays.size(); ++i) k.closest(soa.arrays(), 0, soa.size(), rays[i], hits[i]);
-  return hits;
-}
+using test::closest_one_by_one;
+using test::grid_scene;
+using test::KernelScene;
+using test::random_scene;
+using test::sphere_scene;
 
 bool near_edge(const Hit& h) {
   const float w = 1.0f - h.u - h.v;
@@ -167,12 +67,13 @@ class KernelEquivalence : public ::testing::TestWithParam<Param> {
       GTEST_SKIP() << "CPU lacks " << isa_name(GetParam().isa) << ": skipped";
   }
 
-  void check(const Scene& s) {
+  void check(const KernelScene& s) {
     const Param p = GetParam();
     const TriangleSoA soa(s.mesh);
-    const std::vector<Hit> ref = trace(triangle_kernels(Isa::scalar, p.intersector), soa, s.rays);
+    const std::vector<Hit> ref =
+        closest_one_by_one(triangle_kernels(Isa::scalar, p.intersector), soa, s.rays);
     const TriangleKernels& k = triangle_kernels(p.isa, p.intersector);
-    const std::vector<Hit> got = trace(k, soa, s.rays);
+    const std::vector<Hit> got = closest_one_by_one(k, soa, s.rays);
     const bool exact = p.intersector == Intersector::paper;
     int edge_cases = 0, hits = 0;
     for (std::size_t i = 0; i < s.rays.size(); ++i) {
@@ -222,12 +123,12 @@ class KernelEquivalence : public ::testing::TestWithParam<Param> {
 // count, rays with tmin > 0 mixed in, and a batch resumed from earlier hits.
 TEST_P(KernelEquivalence, BatchMatchesOneRayAtATime) {
   const Param p = GetParam();
-  Scene s = random_scene();
+  KernelScene s = random_scene();
   s.mesh = paper_triangles(2 * kTriangleChunk + 100, 3);
   s.rays.resize(401);  // odd; fewer than elsewhere: the triangle count follows the (L2-sized) chunk
   const TriangleSoA soa(s.mesh);
   const TriangleKernels& k = triangle_kernels(p.isa, p.intersector);
-  const std::vector<Hit> one = trace(k, soa, s.rays);
+  const std::vector<Hit> one = closest_one_by_one(k, soa, s.rays);
   std::vector<Hit> batch(s.rays.size());
   closest_batch(k, soa.arrays(), 0, soa.size(), s.rays.data(), batch.data(), batch.size());
   // resumed: the first half of the triangles, then the rest on top of those hits
@@ -277,7 +178,7 @@ TEST_P(KernelEquivalence, BatchFromOneOriginMatchesOneRayAtATime) {
   const TriangleSoA soa(mesh);
   for (const TriangleKernels* table : tables_of(p)) {
     const TriangleKernels& k = *table;
-    const std::vector<Hit> one = trace(k, soa, rays);
+    const std::vector<Hit> one = closest_one_by_one(k, soa, rays);
     std::vector<Hit> batch(rays.size());
     closest_batch(k, soa.arrays(), 0, soa.size(), rays.data(), batch.data(), batch.size());
     int hits = 0;
@@ -388,106 +289,6 @@ INSTANTIATE_TEST_SUITE_P(AllIsas, KernelEquivalence, ::testing::ValuesIn(all_par
                            return std::string(isa_name(info.param.isa)) + "_" +
                                   intersector_name(info.param.intersector);
                          });
-
-// Hard cases for the `mt` pre-tests: one triangle three times (ties across lanes and steps: the
-// lowest id wins), degenerate ones, a triangle whose plane holds a ray, among random filler; rays
-// at vertices and edges, with tmin or tmax exactly at a hit, in a plane, with NaN and zero parts.
-Scene hard_scene() {
-  Scene s{"hard", paper_triangles(60, 9), {}, true};
-  const Vec3f a{0.2f, 0.2f, 2.0f}, b{0.8f, 0.2f, 2.0f}, c{0.2f, 0.8f, 2.0f};
-  for (uint32_t at : {5u, 17u, 40u}) {
-    const auto n = uint32_t(s.mesh.positions.size());
-    s.mesh.triangles.insert(s.mesh.triangles.begin() + at, std::array<uint32_t, 3>{n, n + 1, n + 2});
-    for (const Vec3f& p : {a, b, c}) s.mesh.positions.push_back(p);
-  }
-  s.mesh.add_triangle({0.4f, 0.4f, 1.0f}, {0.5f, 0.5f, 1.0f}, {0.6f, 0.6f, 1.0f});  // collinear
-  s.mesh.add_triangle({0.3f, 0.3f, 1.5f}, {0.3f, 0.3f, 1.5f}, {0.3f, 0.3f, 1.5f});  // a point
-  const float nan = std::nanf("");
-  const Vec3f down{0, 0, 1};
-  for (const Vec3f& target : {a, b, c, (a + b) * 0.5f, (b + c) * 0.5f, Vec3f{0.4f, 0.4f, 2.0f}}) {
-    const Vec3f o = target - Vec3f{0.01f, 0.02f, 3.0f};
-    s.rays.push_back(Ray{o, target - o});
-    s.rays.push_back(Ray{o, target - o, 1.0f});        // tmin exactly at the hit
-    s.rays.push_back(Ray{o, target - o, 0.0f, 1.0f});  // tmax exactly at the hit
-    s.rays.push_back(Ray{o, target - o, 1.0f, 1.0f});  // both
-  }
-  s.rays.push_back(Ray{{0.0f, 0.5f, 2.0f}, {1, 0, 0}});  // in the duplicates' plane
-  s.rays.push_back(Ray{{0.4f, 0.4f, 0.0f}, down});       // through the collinear one and the point
-  s.rays.push_back(Ray{{nan, 0.4f, 0.0f}, down});
-  s.rays.push_back(Ray{{0.4f, 0.4f, 0.0f}, {0, nan, 1}});
-  s.rays.push_back(Ray{{0.4f, 0.4f, 0.0f}, {0, 0, 0}});
-  s.rays.push_back(Ray{{0.4f, 0.4f, 0.0f}, down, nan});
-  SplitMix64 rng(31);
-  for (int i = 0; i < 500; ++i) s.rays.push_back(Ray{random_point(rng, -0.5f, 1.5f), random_direction(rng)});
-  return s;
-}
-
-// The float `mt` kernels' two pre-tests (MtPretest) are conservative forms of the same conditions,
-// so on every ISA they give the same hits bit for bit, one ray at a time and in batches (pairs).
-TEST(MtPretest, BothFormsGiveTheSameHitsOnEveryIsa) {
-  for (Isa isa : kAllIsas) {
-    if (!isa_supported(isa)) {
-      std::printf("[ skipped ] %s: this CPU lacks it\n", isa_name(isa));
-      continue;
-    }
-    const TriangleKernels& sign = triangle_kernels(isa, Intersector::mt, MtPretest::sign_bits);
-    const TriangleKernels& ordered = triangle_kernels(isa, Intersector::mt, MtPretest::ordered_compares);
-    ASSERT_NE(sign.closest, ordered.closest) << isa_name(isa);
-    for (const Scene& s : {random_scene(), sphere_scene(), grid_scene(), hard_scene()}) {
-      const TriangleSoA soa(s.mesh);
-      const std::vector<Hit> one = trace(sign, soa, s.rays), got = trace(ordered, soa, s.rays);
-      std::vector<Hit> batch(s.rays.size());
-      closest_batch(ordered, soa.arrays(), 0, soa.size(), s.rays.data(), batch.data(), batch.size());
-      int hits = 0;
-      for (std::size_t i = 0; i < s.rays.size(); ++i) {
-        hits += one[i].hit();
-        for (const Hit* h : {&got[i], static_cast<const Hit*>(&batch[i])}) {
-          ASSERT_EQ(h->tri, one[i].tri) << isa_name(isa) << " " << s.name << " ray " << i;
-          if (h->hit()) {
-            ASSERT_EQ(h->t, one[i].t) << isa_name(isa) << " " << s.name << " ray " << i;
-            ASSERT_EQ(h->u, one[i].u) << isa_name(isa) << " " << s.name << " ray " << i;
-            ASSERT_EQ(h->v, one[i].v) << isa_name(isa) << " " << s.name << " ray " << i;
-          }
-        }
-      }
-      EXPECT_GT(hits * 20, int(s.rays.size())) << s.name;
-    }
-  }
-}
-
-TEST(MtPretest, OrderedComparesOnlyForIntelAvx512) {
-  EXPECT_EQ(default_mt_pretest(Isa::avx512, "GenuineIntel"), MtPretest::ordered_compares);
-  EXPECT_EQ(default_mt_pretest(Isa::avx512, "AuthenticAMD"), MtPretest::sign_bits);
-  EXPECT_EQ(default_mt_pretest(Isa::avx2, "GenuineIntel"), MtPretest::sign_bits);
-  EXPECT_EQ(default_mt_pretest(Isa::scalar, "GenuineIntel"), MtPretest::sign_bits);
-  for (Isa isa : supported_isas())  // the two-argument table is the running CPU's default
-    EXPECT_EQ(&triangle_kernels(isa, Intersector::mt),
-              &triangle_kernels(isa, Intersector::mt, default_mt_pretest(isa, cpu_features().vendor)));
-}
-
-// The paper's scalar versions (Table 1's original and optimized) against the scalar `paper` kernel:
-// the same arithmetic, so the same bits.
-TEST(PaperBaselines, OriginalAndOptimizedMatchPaperKernelExactly) {
-  for (const Scene& s : {random_scene(), sphere_scene(), grid_scene()}) {
-    const TriangleSoA soa(s.mesh);
-    const std::vector<Hit> ref = trace(triangle_kernels(Isa::scalar, Intersector::paper), soa, s.rays);
-    RayBatch batch;
-    for (const Ray& r : s.rays) batch.push_back(r);
-    std::vector<Hit> original(s.rays.size()), optimized(s.rays.size());
-    closest_original(paper_aos_triangles(s.mesh), s.rays, 0, s.rays.size(), original);
-    closest_optimized(paper_soa_triangles(s.mesh), batch, 0, s.rays.size(), optimized);
-    for (std::size_t i = 0; i < s.rays.size(); ++i) {
-      for (const Hit* h : {&original[i], &optimized[i]}) {
-        ASSERT_EQ(h->tri, ref[i].tri) << s.name << " ray " << i;
-        if (h->hit()) {
-          ASSERT_EQ(h->t, ref[i].t) << s.name << " ray " << i;
-          ASSERT_EQ(h->u, ref[i].u) << s.name << " ray " << i;
-          ASSERT_EQ(h->v, ref[i].v) << s.name << " ray " << i;
-        }
-      }
-    }
-  }
-}
 
 }  // namespace
 }  // namespace rayvec
