@@ -128,19 +128,20 @@ void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const Tr
       alignas(64) float dist[N];
       unsigned mask = boxes.hits(node.bounds, tmin, tmax, dist);
       if (mask != 0) {
-        const unsigned k0 = unsigned(__builtin_ctz(mask));
-        mask &= mask - 1;
-        if (mask == 0) {  // one child: enter it
-          ref = node.ref[k0];
-          continue;
-        }
-        const unsigned k1 = unsigned(__builtin_ctz(mask));
-        mask &= mask - 1;
-        if (mask == 0) {  // two (the common case): push the farther, enter the nearer
-          const bool first_nearer = dist[k0] < dist[k1];
-          const unsigned far = first_nearer ? k1 : k0;
-          stack[sp++] = StackItem{node.ref[far], dist[far]};
-          ref = node.ref[first_nearer ? k0 : k1];
+        const unsigned rest = mask & (mask - 1);
+        if ((rest & (rest - 1)) == 0) {
+          // one or two children hit (about three node visits in four): enter the nearer, push the
+          // other. One path for both, without a branch between them: incoherent rays, whose paths
+          // no predictor learns, often mispredicted it (benchmarks.md#decision-one-or-two-children).
+          // With one child k0 = k1 and the entry written at the top is not pushed (the stack holds
+          // one entry more than a traversal pushes). Ties enter the later child first, as the sort
+          // below does.
+          const unsigned k0 = unsigned(__builtin_ctz(mask)), k1 = 31u - unsigned(__builtin_clz(mask));
+          const bool second_nearer = !(dist[k0] < dist[k1]);
+          const unsigned far = second_nearer ? k0 : k1, nearer = second_nearer ? k1 : k0;
+          stack[sp] = StackItem{node.ref[far], dist[far]};
+          sp += rest != 0;
+          ref = node.ref[nearer];
           continue;
         }
         // more: insertion sort straight onto the stack, farthest deepest (N is small), then enter
@@ -148,7 +149,7 @@ void bvh_closest_impl(const BvhArrays& bvh, const TriangleArrays& tris, const Tr
         // pointer, plane offsets, tmin) stays in registers instead of being spilled around a sort
         // (benchmarks.md#decision-sort-on-the-stack).
         const uint32_t base = sp;
-        for (mask |= (1u << k0) | (1u << k1); mask != 0; mask &= mask - 1) {
+        for (; mask != 0; mask &= mask - 1) {
           const unsigned k = unsigned(__builtin_ctz(mask));
           const float d = dist[k];
           uint32_t j = sp++;
