@@ -37,8 +37,10 @@ struct BvhArrays {
   const void* nodes;  // WideNode<width>[node_count]
   uint32_t width;
   uint32_t node_count;
-  uint32_t stack_size;  // entries a traversal stack needs: depth · (width − 1) + 1, never exceeded
-  float box_epsilon;    // relative widening of ray–box intervals (kDefaultBoxEpsilon)
+  // entries a traversal stack needs: depth · (width − 1) pushed at most, + 1 for the entry the
+  // single-ray closest-hit traversal writes above its top without pushing it
+  uint32_t stack_size;
+  float box_epsilon;  // relative widening of ray–box intervals (kDefaultBoxEpsilon)
   // the union of the root's child boxes, the bounds of the whole tree (lo = +inf, hi = −inf when
   // there are none): the packets' first test (packet_traversal.inl)
   float root_lo[3], root_hi[3];
