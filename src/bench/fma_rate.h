@@ -18,14 +18,19 @@ namespace rayvec {
 // per cycle. 0 if the ISA is not supported by this CPU.
 double measure_fma_per_ns(Isa isa);
 
+// Each ISA unit's probe: the vector FMAs per nanosecond of each of kFmaRounds rounds (about 0.3 ms
+// each), into rates[0..kFmaRounds). measure_fma_per_ns keeps their median; the selection runs in
+// the baseline unit, not in an ISA unit (whose out-of-line std:: code could be picked by the linker
+// for baseline callers).
+inline constexpr int kFmaRounds = 31;
 namespace scalar {
-double fma_per_ns();  // a·m + c as a multiply and an add (no FMA in baseline x86-64)
+void fma_rates(double* rates);  // a·m + c as a multiply and an add (no FMA in baseline x86-64)
 }
 namespace avx2 {
-double fma_per_ns();
+void fma_rates(double* rates);
 }
 namespace avx512 {
-double fma_per_ns();
+void fma_rates(double* rates);
 }
 
 }  // namespace rayvec

@@ -1,6 +1,4 @@
-// fma_per_ns() for avx2 (flags by file name, cmake/IsaFlags.cmake); the body is fma_rate.inl.
-#include <algorithm>
-
+// fma_rates() for avx2 (flags by file name, cmake/IsaFlags.cmake); the body is fma_rate.inl.
 #include "bench/cpu_clock.h"
 #include "bench/fma_rate.h"
 #include "simd/vfloat_avx2.h"
