@@ -24,7 +24,7 @@ Sections (each can be skipped; one whose tool is missing is skipped with the rea
            whole processes, alternating rounds; RMSE of the two pictures
 
 CPU times are user + system time of the whole process (wait4). A fuzzer or build on another core
-moves them little; run nothing on the measured core. A full run takes about 25 minutes at 4 rounds.
+moves them little; run nothing on the measured core. A full run takes about 10 minutes at 4 rounds.
 """
 import argparse
 import datetime
