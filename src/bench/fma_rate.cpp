@@ -1,6 +1,8 @@
 #include "bench/fma_rate.h"
 
-#include <algorithm>
+#include <vector>
+
+#include "bench/median.h"
 
 namespace rayvec {
 
@@ -14,8 +16,7 @@ double measure_fma_per_ns(Isa isa) {
   }
   // the median round, like the clock's one long run an average rate (the best round would sit
   // above it and put FMA/cycle over the pipes' count)
-  std::nth_element(rates, rates + kFmaRounds / 2, rates + kFmaRounds);
-  return rates[kFmaRounds / 2];
+  return median(std::vector<double>(rates, rates + kFmaRounds));
 }
 
 }  // namespace rayvec
