@@ -181,14 +181,26 @@ class Targets:
         self.details.append("`bench obj sphere1m.obj --repeats 5`:\n\n```\n" + out.strip() + "\n```")
 
     # --- embree ----------------------------------------------------------------------------------
-    def embree(self):
+    def has_embree(self, section):
+        """Whether this build has the Embree rival; else says that `section` is skipped."""
         probe = subprocess.run([self.bin, "bench", "rays", f"{ROOT}/scenes/models/cube.obj", "--vs-embree",
                                 "--size", "4x4", "--builds", "1", "--repeats", "1"], capture_output=True)
         if probe.returncode != 0:
-            log("targets: embree skipped: this build has no Embree rival (libembree-dev, then rebuild)")
+            log(f"targets: {section} skipped: this build has no Embree rival (libembree-dev, then rebuild)")
+        return probe.returncode == 0
+
+    def sphere(self, name):
+        """A bumpy sphere of the work folder: sphere4k, sphere250k or sphere1m."""
+        if name == "sphere1m":
+            return self.sphere1m()
+        rings = {"sphere4k": ("32", "64"), "sphere250k": ("354", "354")}[name]
+        return self.make(f"{name}.obj", [sys.executable, f"{ROOT}/scripts/make_bumpy_sphere.py", f"{name}.obj",
+                                         "--rings", rings[0], "--segments", rings[1]])
+
+    def embree(self):
+        if not self.has_embree("embree"):
             return
-        meshes = [self.make("sphere4k.obj", [sys.executable, f"{ROOT}/scripts/make_bumpy_sphere.py", "sphere4k.obj",
-                                             "--rings", "32", "--segments", "64"])]
+        meshes = [self.sphere("sphere4k")]
         if os.path.exists(f"{ASSIMP}/WusonOBJ.obj"):
             meshes.append(f"{ASSIMP}/WusonOBJ.obj")
         meshes.append(self.sphere1m())
@@ -251,17 +263,8 @@ class Targets:
                ("--slot-cull", ("0", "1"), "packet_slot_cull", ("sphere250k", "sphere1m"),
                 "decision-packet-slot-cull"))
 
-    def choice_mesh(self, name):
-        if name == "sphere1m":
-            return self.sphere1m()
-        rings = {"sphere4k": ("32", "64"), "sphere250k": ("354", "354")}[name]
-        return self.make(f"{name}.obj", [sys.executable, f"{ROOT}/scripts/make_bumpy_sphere.py", f"{name}.obj",
-                                         "--rings", rings[0], "--segments", rings[1]])
-
     def choices(self):
-        if subprocess.run([self.bin, "bench", "rays", f"{ROOT}/scenes/models/cube.obj", "--vs-embree", "--size",
-                           "4x4", "--builds", "1", "--repeats", "1"], capture_output=True).returncode != 0:
-            log("targets: choices skipped: this build has no Embree rival (libembree-dev, then rebuild)")
+        if not self.has_embree("choices"):
             return
         isas = ["avx2"] + (["avx512"] if self.has_avx512 else [])
         bench = [self.bin, "bench", "rays", "--vs-embree", "--json", "--threads", "1", "--builds", "1",
@@ -270,7 +273,7 @@ class Targets:
             cells = []
             for isa in isas:
                 for name in names:
-                    mesh = self.choice_mesh(name)
+                    mesh = self.sphere(name)
                     default = json.loads(run([self.bin, "bench", "rays", mesh, "--json", "--builds", "1",
                                               "--repeats", "1", "--size", "16x16", "--isa", isa])[0])[key]
                     runs = {v: [] for v in values}
