@@ -26,18 +26,12 @@ RAYVEC_INLINE void form_once(WatertightLeafRay<V>& s, const TriangleArrays& T, c
   s.formed = true;
 }
 
-// The leaf calls out of line: inlined into the traversal loop, their registers (and the ray's
-// formation) would crowd the traversal's — except the closest-hit leaf of large trees, whose rays
-// wait on leaves from memory more than on the node steps' registers (LeafCall::inlined:
-// WatertightLeaf<V, true>, benchmarks.md#decision-inlined-leaf).
-template <class V>
-__attribute__((noinline)) bool watertight_occluded_leaf(const TriangleArrays& T, WatertightLeafRay<V>& s,
-                                                        const Ray& ray, uint32_t begin, uint32_t end,
-                                                        const HitFilter* filter) {
-  form_once(s, T, ray);
-  return watertight_occluded_ray<V>(T, s.r, s.tlimit, begin, end, filter);
-}
-
+// The closest-hit leaf is called out of line: inlined into the traversal loop, its registers (and
+// the ray's formation) would crowd the traversal's, except in large trees, whose rays wait on
+// leaves from memory more than on the node steps' registers (LeafCall::inlined: WatertightLeaf<V,
+// true>, benchmarks.md#decision-inlined-leaf). The any-hit leaf is always inlined: a shadow ray
+// keeps no nearest hit and stops at its first, and the call cost more than the registers it spares
+// (benchmarks.md#decision-any-hit-leaf-lanes).
 template <class V>
 RAYVEC_INLINE void watertight_closest_leaf_inline(const TriangleArrays& T, WatertightLeafRay<V>& s,
                                                   const Ray& ray, uint32_t begin, uint32_t end, Hit& hit) {
@@ -52,7 +46,7 @@ __attribute__((noinline)) void watertight_closest_leaf(const TriangleArrays& T, 
   watertight_closest_leaf_inline<V>(T, s, ray, begin, end, hit);
 }
 
-// Inlined: the closest-hit leaf inlined into the traversal loop (the any-hit leaf is called either way).
+// Inlined: the closest-hit leaf inlined into the traversal loop too (the any-hit leaf always is).
 template <class V, bool Inlined = false>
 struct WatertightLeaf {
   struct Closest {
@@ -73,10 +67,14 @@ struct WatertightLeaf {
   struct AnyHit {
     const Ray& ray;
     mutable WatertightLeafRay<V> s;
-    RAYVEC_INLINE AnyHit(const TriangleKernels&, const TriangleArrays&, const Ray& q) : ray(q) {}
+    // zeroed first, as the inlined Closest's (-Wmaybe-uninitialized)
+    RAYVEC_INLINE AnyHit(const TriangleKernels&, const TriangleArrays&, const Ray& q) : ray(q) {
+      s = WatertightLeafRay<V>{};
+    }
     RAYVEC_INLINE bool occluded(const TriangleArrays& tris, uint32_t begin, uint32_t end,
                                 const HitFilter* filter) const {
-      return watertight_occluded_leaf<V>(tris, s, ray, begin, end, filter);
+      form_once(s, tris, ray);
+      return watertight_occluded_ray<V>(tris, s.r, s.tlimit, begin, end, filter);
     }
   };
 };
