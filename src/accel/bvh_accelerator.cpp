@@ -23,6 +23,20 @@ LeafCall leaf_call(const TraceConfig& config, const BvhOptions& options, std::si
   return LeafCall(options.leaf_call);
 }
 
+// A binary SAH tree with its leaves aligned to the kernel's steps, and its wide collapse.
+struct BuiltTree {
+  BinaryBvh binary;
+  WideBvh wide;
+};
+
+BuiltTree build_tree(const TriangleMesh& mesh, const SahConfig& sah, uint32_t step_slots, int width,
+                     uint32_t merge_slots) {
+  BuiltTree t{build_binned_sah(mesh, sah), {}};
+  align_leaves(t.binary, step_slots);
+  t.wide = WideBvh(t.binary, width, CollapseRule::lower_sah_cost, merge_slots);
+  return t;
+}
+
 }  // namespace
 
 Normals bvh_normals(Intersector intersector, int stored_normals, std::size_t tree_bytes, std::size_t slots,
@@ -41,16 +55,30 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
                                 options.width ? options.width : default_bvh_width(config.isa, mesh.size()),
                                 leaf_call(config, options, mesh.size()), config.intersector)) {
   SahConfig sah = options.sah;
-  if (options.leaves_from_kernel && kernels_->width >= 8) {
-    sah.leaf_block = uint32_t(kernels_->width);
+  const uint32_t step = uint32_t(kernels_->width);
+  const bool from_kernel = options.leaves_from_kernel && step >= 8;
+  if (from_kernel) {
+    sah.leaf_block = step;
     const int steps = default_leaf_steps(config.isa, mesh.size());
     sah.max_leaf = std::min(uint32_t(steps) * sah.leaf_block, kMaxLeafTriangles);
   }
-  BinaryBvh binary = build_binned_sah(mesh, sah);
-  align_leaves(binary, uint32_t(kernels_->width));
-  const auto merge_slots =
-      std::min(uint32_t(std::max(options.merge_steps, 0)) * uint32_t(kernels_->width), kMaxLeafTriangles);
-  tree_ = WideBvh(binary, traversal_->width, CollapseRule::lower_sah_cost, merge_slots);
+  const auto merge_slots = std::min(uint32_t(std::max(options.merge_steps, 0)) * step, kMaxLeafTriangles);
+  BuiltTree built = build_tree(mesh, sah, step, traversal_->width, merge_slots);
+  // Small meshes: a second tree whose SAH costs leaves in half steps (so it splits where halving a
+  // leaf's triangles shrinks its box enough), kept when its whole-tree cost is the lower: long
+  // triangles' boxes gain, compact meshes' do not (benchmarks.md#decision-leaf-block-choice).
+  if (from_kernel && mesh.size() < kWideNodeTriangles) {
+    SahConfig half = sah;
+    half.leaf_block = step / 2;
+    BuiltTree other = build_tree(mesh, half, step, traversal_->width, merge_slots);
+    if (other.wide.sah_cost(step) < built.wide.sah_cost(step)) {
+      built = std::move(other);
+      sah = half;
+    }
+  }
+  leaf_block_ = sah.leaf_block;
+  BinaryBvh& binary = built.binary;
+  tree_ = std::move(built.wide);
   sort_leaf_slots(tree_, binary.order);
   tree_.set_box_epsilon(options.box_epsilon);
   tree_.set_packet_slot_cull(options.packet_slot_cull < 0 ? mesh.size() < kPacketSlotCullBelow

@@ -16,7 +16,8 @@ struct BvhOptions {
   SahConfig sah;
   // Size leaves to the triangle kernel (benchmarks.md#decision-leaf-size): SAH leaf cost per
   // kernel-width block of triangles and up to default_leaf_steps blocks per leaf (AVX-512: 16 and
-  // 32, AVX2: 8 and 16; one block for small meshes; scalar keeps sah's 4 and 8). false: use
+  // 32, AVX2: 8 and 16; one block for small meshes, costed per half block instead where that
+  // tree's cost is lower: #decision-leaf-block-choice; scalar keeps sah's 4 and 8). false: use
   // sah.max_leaf and sah.leaf_block as given.
   bool leaves_from_kernel = true;
   int width = 0;  // children per node: 0 = default_bvh_width(isa, triangles)
@@ -96,6 +97,9 @@ class BvhAccelerator final : public Accelerator {
   const WideBvh& tree() const { return tree_; }
   const TriangleSoA& triangles() const { return tris_; }
   const BvhTraversal& traversal() const { return *traversal_; }  // the traversal table in use
+  // The SAH's leaf block the tree was built with (SahConfig::leaf_block): the kernel's width, or on
+  // small meshes half of it where that tree's cost is the lower.
+  uint32_t leaf_block() const { return leaf_block_; }
 
  private:
   TraceConfig config_;
@@ -103,6 +107,7 @@ class BvhAccelerator final : public Accelerator {
   TriangleSoA tris_;
   const TriangleKernels* kernels_;
   const BvhTraversal* traversal_;
+  uint32_t leaf_block_ = 0;
 };
 
 }  // namespace rayvec

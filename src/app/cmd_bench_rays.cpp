@@ -212,7 +212,8 @@ int run(const Options& o) {
     std::printf(
         "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
         "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
-        "\"leaf_call\":\"%s\",\"merge_steps\":%d,\"split_budget\":%.3f,\"references_per_tri\":%.4f,"
+        "\"leaf_call\":\"%s\",\"leaf_block\":%u,\"merge_steps\":%d,\"split_budget\":%.3f,\"references_per_"
+        "tri\":%.4f,"
         "\"stored_normals\":%s,\"packet_slot_cull\":%s,"
         "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
         "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
@@ -220,8 +221,8 @@ int run(const Options& o) {
         json_string(isa_name(config.isa)).c_str(), json_string(intersector_name(config.intersector)).c_str(),
         threads, bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
         bvh->traversal().leaf_call != LeafCall::table ? "true" : "false",
-        leaf_call_name(bvh->traversal().leaf_call), o.merge_steps, double(split_budget), refs_per_tri,
-        bvh->triangles().stores_normals() ? "true" : "false",
+        leaf_call_name(bvh->traversal().leaf_call), bvh->leaf_block(), o.merge_steps, double(split_budget),
+        refs_per_tri, bvh->triangles().stores_normals() ? "true" : "false",
         bvh->tree().arrays().packet_slot_cull ? "true" : "false", o.builds, build_s,
         json_array(build_runs).c_str(), bytes_per_tri, fma.avx2, fma.avx512);
     print_sets_json(run);
@@ -252,11 +253,13 @@ int run(const Options& o) {
                   ? " (512-bit operations at half rate here: 16-wide kernels keep no edge in lanes a cycle)"
                   : "");
   std::printf(
-      "bvh: %d-wide, %u nodes, %u leaves (merged up to %d kernel steps), %.3f references per triangle "
+      "bvh: %d-wide, %u nodes, %u leaves (SAH leaf block %u, merged up to %d kernel steps), %.3f references "
+      "per triangle "
       "(spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, packet slot cull %s; "
       "build %.4f s; %.1f bytes/triangle (nodes %.1f + triangles %.1f)\n",
-      bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), o.merge_steps, refs_per_tri,
-      double(split_budget), bvh->tree().depth(), leaf_call_name(bvh->traversal().leaf_call),
+      bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), bvh->leaf_block(),
+      o.merge_steps, refs_per_tri, double(split_budget), bvh->tree().depth(),
+      leaf_call_name(bvh->traversal().leaf_call),
       bvh->triangles().stores_normals() ? "stored" : "formed per step",
       bvh->tree().arrays().packet_slot_cull ? "on" : "off", build_s, bytes_per_tri,
       double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);

@@ -1,6 +1,7 @@
 #include "bvh/wide_bvh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <new>
@@ -260,6 +261,38 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule, uint32_t m
 }
 
 namespace {
+float box_area(const float lo[3], const float hi[3]) {
+  const float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+  return dx * dy + dy * dz + dz * dx;
+}
+
+template <int N>
+double tree_sah_cost(const BvhArrays& a, uint32_t step_slots) {
+  const auto* nodes = static_cast<const WideNode<N>*>(a.nodes);
+  const float root = box_area(a.root_lo, a.root_hi);
+  if (a.node_count == 0 || !(root > 0.0f)) return 0.0;
+  double cost = 0.0;
+  for (uint32_t n = 0; n < a.node_count; ++n) {
+    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int k = 0; k < N; ++k) {
+      const uint32_t ref = nodes[n].ref[k];
+      if (ref == kEmptyRef) continue;
+      float clo[3], chi[3];
+      for (int axis = 0; axis < 3; ++axis) {
+        clo[axis] = nodes[n].bounds[axis][k];
+        chi[axis] = nodes[n].bounds[axis + 3][k];
+        lo[axis] = std::min(lo[axis], clo[axis]);
+        hi[axis] = std::max(hi[axis], chi[axis]);
+      }
+      if (!(ref & kLeafFlag)) continue;
+      const uint32_t begin = (ref >> 5) & (kMaxLeafBegin - 1), last = begin + (ref & 31u);
+      cost += double(box_area(clo, chi)) * double(last / step_slots - begin / step_slots + 1);
+    }
+    cost += double(box_area(lo, hi));
+  }
+  return cost / double(root);
+}
+
 template <int N>
 void sort_leaves(const BvhArrays& a, std::vector<uint32_t>& order) {
   const auto* nodes = static_cast<const WideNode<N>*>(a.nodes);
@@ -272,6 +305,15 @@ void sort_leaves(const BvhArrays& a, std::vector<uint32_t>& order) {
     }
 }
 }  // namespace
+
+double WideBvh::sah_cost(uint32_t step_slots) const {
+  step_slots = std::max(step_slots, 1u);
+  switch (arrays_.width) {
+    case 4: return tree_sah_cost<4>(arrays_, step_slots);
+    case 8: return tree_sah_cost<8>(arrays_, step_slots);
+    default: return tree_sah_cost<16>(arrays_, step_slots);
+  }
+}
 
 void sort_leaf_slots(const WideBvh& tree, std::vector<uint32_t>& order) {
   switch (tree.width()) {

@@ -77,6 +77,11 @@ class WideBvh {
   // SAH node cost: Σ over wide nodes of the half surface area of the node's box (the union of its
   // children's boxes), as accumulated in double over float areas.
   double sah_node_cost() const { return sah_cost_; }
+  // SAH cost of the whole tree relative to its root box: Σ over wide nodes of their box's surface
+  // area, plus Σ over leaves of the leaf's box area times the kernel steps it takes (aligned groups
+  // of `step_slots` slots), a node visit and a kernel step weighed alike. The measure two leaf
+  // sizings of one mesh are compared by (BvhAccelerator; benchmarks.md#decision-leaf-block-choice).
+  double sah_cost(uint32_t step_slots) const;
   // Changes the relative widening of ray–box intervals (must stay > 0: with 0, an infinite slab
   // distance times 0 is NaN and the box is missed).
   void set_box_epsilon(float eps) { arrays_.box_epsilon = eps; }
