@@ -61,22 +61,37 @@ inline TriangleMesh flat_grid(int n) {
   return m;
 }
 
-// n small random triangles (edges up to 0.05) in [-1, 1]^3, crossed by n / 50 long thin ones
-// (sticks about 2 long, 0.02 wide) and two large floor triangles: the long ones make the boxes of
-// object splits overlap, so the builder's spatial splits reference them in several leaves.
-inline TriangleMesh long_slivers(int n, unsigned seed) {
-  std::mt19937 rng(seed);
+// Adds `count` long thin triangles in random directions through [-1, 1]^3 (sticks about 2 long,
+// 0.02 wide), drawn from `rng`.
+inline void add_sticks(TriangleMesh& m, int count, std::mt19937& rng) {
   std::uniform_real_distribution<float> pos(-1.0f, 1.0f);
-  TriangleMesh m = random_soup(n, 0.05f, seed + 1);
-  m.add_triangle({-1.5f, -1.0f, -1.5f}, {1.5f, -1.0f, -1.5f}, {-1.5f, -1.0f, 1.5f});
-  m.add_triangle({1.5f, -1.0f, -1.5f}, {1.5f, -1.0f, 1.5f}, {-1.5f, -1.0f, 1.5f});
-  for (int i = 0; i < n / 50; ++i) {
+  for (int i = 0; i < count; ++i) {
     const Vec3f c{pos(rng), pos(rng), pos(rng)};
     Vec3f u{pos(rng), pos(rng), pos(rng)};
     u = u * (1.0f / std::max(length(u), 0.1f));
     const Vec3f w{0.01f * pos(rng), 0.01f * pos(rng), 0.01f * pos(rng)};
     m.add_triangle(c - u, c + u, c + w);
   }
+}
+
+// n sticks alone: like architectural models' long faces, whose leaf boxes shrink most when a leaf
+// holds fewer of them.
+inline TriangleMesh sticks(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  TriangleMesh m;
+  add_sticks(m, n, rng);
+  return m;
+}
+
+// n small random triangles (edges up to 0.05) in [-1, 1]^3, crossed by n / 50 sticks and two large
+// floor triangles: the long ones make the boxes of object splits overlap, so the builder's spatial
+// splits reference them in several leaves.
+inline TriangleMesh long_slivers(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  TriangleMesh m = random_soup(n, 0.05f, seed + 1);
+  m.add_triangle({-1.5f, -1.0f, -1.5f}, {1.5f, -1.0f, -1.5f}, {-1.5f, -1.0f, 1.5f});
+  m.add_triangle({1.5f, -1.0f, -1.5f}, {1.5f, -1.0f, 1.5f}, {-1.5f, -1.0f, 1.5f});
+  add_sticks(m, n / 50, rng);
   return m;
 }
 

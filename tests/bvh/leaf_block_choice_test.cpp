@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -18,22 +17,6 @@
 
 namespace rayvec {
 namespace {
-
-// n long thin triangles in random directions through [-1, 1]^3 (about 2 long, 0.02 wide): like
-// architectural models' long faces, whose leaf boxes shrink most when a leaf holds fewer of them.
-TriangleMesh sticks(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> pos(-1.0f, 1.0f);
-  TriangleMesh m;
-  for (int i = 0; i < n; ++i) {
-    const Vec3f c{pos(rng), pos(rng), pos(rng)};
-    Vec3f u{pos(rng), pos(rng), pos(rng)};
-    u = u * (1.0f / std::max(length(u), 0.1f));
-    const Vec3f w{0.01f * pos(rng), 0.01f * pos(rng), 0.01f * pos(rng)};
-    m.add_triangle(c - u, c + u, c + w);
-  }
-  return m;
-}
 
 TEST(WideBvhSahCost, CountsTheRootOnceAndEachLeafPerKernelStep) {
   TriangleMesh m;  // three triangles in one leaf whose box is the root's
@@ -55,7 +38,7 @@ struct Case {
 TEST(BvhLeafBlock, SmallMeshesKeepTheTreeOfLowerSahCost) {
   const std::vector<Case> cases = {{"sphere", test::sphere(1.0f, 24, 48)},
                                    {"soup", test::random_soup(3000, 0.05f, 7)},
-                                   {"sticks", sticks(3000, 11)},
+                                   {"sticks", test::sticks(3000, 11)},
                                    {"small sphere", test::sphere(1.0f, 8, 16)}};
   std::vector<std::string> skipped;
   for (Isa isa : {Isa::avx2, Isa::avx512}) {
@@ -100,13 +83,13 @@ TEST(BvhLeafBlock, LargeMeshesAndExplicitLeavesKeepTheirBlock) {
   if (!isa_supported(isa)) GTEST_SKIP() << "no AVX2 on this CPU";
   const TraceConfig config{isa, Intersector::mt};
   const uint32_t step = uint32_t(triangle_kernels(isa, Intersector::mt).width);
-  const TriangleMesh large = sticks(int(kWideNodeTriangles), 5);
+  const TriangleMesh large = test::sticks(int(kWideNodeTriangles), 5);
   EXPECT_EQ(BvhAccelerator(large, config).leaf_block(), step);
   BvhOptions explicit_leaves;
   explicit_leaves.leaves_from_kernel = false;
   explicit_leaves.sah.leaf_block = 16;
   explicit_leaves.sah.max_leaf = 16;
-  EXPECT_EQ(BvhAccelerator(sticks(3000, 11), config, explicit_leaves).leaf_block(), 16u);
+  EXPECT_EQ(BvhAccelerator(test::sticks(3000, 11), config, explicit_leaves).leaf_block(), 16u);
 }
 
 }  // namespace
