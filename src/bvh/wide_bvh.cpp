@@ -1,7 +1,6 @@
 #include "bvh/wide_bvh.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <limits>
 #include <new>
@@ -261,34 +260,26 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule, uint32_t m
 }
 
 namespace {
-float box_area(const float lo[3], const float hi[3]) {
-  const float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
-  return dx * dy + dy * dz + dz * dx;
-}
-
 template <int N>
 double tree_sah_cost(const BvhArrays& a, uint32_t step_slots) {
   const auto* nodes = static_cast<const WideNode<N>*>(a.nodes);
-  const float root = box_area(a.root_lo, a.root_hi);
+  const BBox root_box{{a.root_lo[0], a.root_lo[1], a.root_lo[2]}, {a.root_hi[0], a.root_hi[1], a.root_hi[2]}};
+  const float root = root_box.half_area();
   if (a.node_count == 0 || !(root > 0.0f)) return 0.0;
   double cost = 0.0;
   for (uint32_t n = 0; n < a.node_count; ++n) {
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    BBox node;
     for (int k = 0; k < N; ++k) {
       const uint32_t ref = nodes[n].ref[k];
       if (ref == kEmptyRef) continue;
-      float clo[3], chi[3];
-      for (int axis = 0; axis < 3; ++axis) {
-        clo[axis] = nodes[n].bounds[axis][k];
-        chi[axis] = nodes[n].bounds[axis + 3][k];
-        lo[axis] = std::min(lo[axis], clo[axis]);
-        hi[axis] = std::max(hi[axis], chi[axis]);
-      }
+      const auto& b = nodes[n].bounds;
+      const BBox child{{b[0][k], b[1][k], b[2][k]}, {b[3][k], b[4][k], b[5][k]}};
+      node.grow(child);
       if (!(ref & kLeafFlag)) continue;
       const uint32_t begin = (ref >> 5) & (kMaxLeafBegin - 1), last = begin + (ref & 31u);
-      cost += double(box_area(clo, chi)) * double(last / step_slots - begin / step_slots + 1);
+      cost += double(child.half_area()) * double(last / step_slots - begin / step_slots + 1);
     }
-    cost += double(box_area(lo, hi));
+    cost += double(node.half_area());
   }
   return cost / double(root);
 }
