@@ -66,22 +66,22 @@ RAYVEC_INLINE void for_slot_pairs(uint32_t first, uint64_t slots, const Pair& pa
 // The sine below which `mt` counts a triangle as grazed by the packet (see above).
 inline constexpr float kGraze = 0x1p-6f;
 
-// The hull of a uniform forward packet in vfloat lanes over t in [0, inf), and the margins its
-// triangle boxes are widened by.
+// How a uniform forward packet culls triangles: its hull over t in [0, inf) (the hull is the
+// packet's, PacketChildren's, passed in) and the margins its triangle boxes are widened by.
 struct SlotCull {
-  BoxHull<vfloat> hull;
   bool on;          // BvhArrays::packet_slot_cull: else every slot
   float margin;     // watertight
   float margin_mt;  // mt
-  vfloat d0[3];     // mt: the direction of the packet's first lane
-  vfloat graze2;    // mt: (kGraze + sin θ)²·|d0|², θ the widest angle between d0 and a lane's direction
+  float d0[3];      // mt: the direction of the packet's first lane
+  float graze2;     // mt: (kGraze + sin θ)²·|d0|², θ the widest angle between d0 and a lane's direction
 
   // The slots of [begin, end) whose triangle box, widened by the margin, the hull enters, in
   // leaf_slot_bits' layout. The boxes are formed from the triangle rows a block at a time, laid out
   // as a 16-wide node's child boxes; padding slots (zero area) may pass or not: no kernel reports them.
   // Mt: also every triangle that a lane's direction may meet at a sine below kGraze (see above).
   template <bool Mt>
-  RAYVEC_INLINE uint64_t slots(const TriangleArrays& T, uint32_t begin, uint32_t end) const {
+  RAYVEC_INLINE uint64_t slots(const TriangleArrays& T, uint32_t begin, uint32_t end,
+                               const PacketHull& hull) const {
     if (!on) return leaf_slot_bits(begin, end);
     const uint32_t first = leaf_first(begin);
     const vfloat m = vfloat::broadcast(Mt ? margin_mt : margin);
@@ -106,25 +106,24 @@ struct SlotCull {
                                                            vfloat::load(ng + 2 * kSlotBlock)}
                                         : mt_normal(v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2],
                                                     v2[0] - v0[0], v2[1] - v0[1], v2[2] - v0[2]);
-          const vfloat dn = fmadd(d0[0], n.x, fmadd(d0[1], n.y, d0[2] * n.z));
+          const vfloat dn = fmadd(vfloat::broadcast(d0[0]), n.x,
+                                  fmadd(vfloat::broadcast(d0[1]), n.y, vfloat::broadcast(d0[2]) * n.z));
           const vfloat n2 = fmadd(n.x, n.x, fmadd(n.y, n.y, n.z * n.z));
           // not grazed where (d0·n)² >= (kGraze + sin θ)²·|d0|²·|n|² (NaN: grazed)
-          grazed |= (~bits(dn * dn >= graze2 * n2) & ((1u << vfloat::W) - 1u)) << j;
+          grazed |= (~bits(dn * dn >= vfloat::broadcast(graze2) * n2) & ((1u << vfloat::W) - 1u)) << j;
         }
       }
-      found |= uint64_t(BoxLanes16::hits_hull(box, hull, __builtin_inff()) | grazed) << (b - first);
+      found |= uint64_t(BoxLanes16::hits_hull(box, hull, 0.0f, __builtin_inff()) | grazed) << (b - first);
     }
     return found & leaf_slot_bits(begin, end);
   }
 };
 
-// The cull of a packet whose hull is h and scale s (see above), d[a] the rows of its directions.
-RAYVEC_INLINE SlotCull slot_cull(bool on, PacketHull h, float s, const pfloat d[3], unsigned active) {
-  h.tmin = 0.0f;
+// The cull of a packet of scale s (see above), d[a] the rows of its directions.
+RAYVEC_INLINE SlotCull slot_cull(bool on, float s, const pfloat d[3], unsigned active) {
   SlotCull c;
   c.on = on;
   if (!on) return c;
-  c.hull = BoxLanes16::prepare_hull(h);
   c.margin = s * 0x1p-14f;
   c.margin_mt = s * 0x1p-10f;
   // sin² of each lane's angle to d0: |d × d0|² / (|d|²·|d0|²)
@@ -139,9 +138,9 @@ RAYVEC_INLINE SlotCull slot_cull(bool on, PacketHull h, float s, const pfloat d[
       (cx * cx + cy * cy + cz * cz) / ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * pfloat::broadcast(d02));
   const float sin_widest = __builtin_sqrtf(hmax_lanes(sin2, active)) * (1.0f + 0x1p-10f);  // rounded up
   const float limit = kGraze + sin_widest;
-  c.d0[0] = vfloat::broadcast(x);
-  c.d0[1] = vfloat::broadcast(y);
-  c.d0[2] = vfloat::broadcast(z);
-  c.graze2 = vfloat::broadcast(limit * limit * d02);
+  c.d0[0] = x;
+  c.d0[1] = y;
+  c.d0[2] = z;
+  c.graze2 = limit * limit * d02;
   return c;
 }

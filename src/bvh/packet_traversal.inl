@@ -123,13 +123,13 @@ struct PacketChildren<B, false> {
 };
 template <class B>
 struct PacketChildren<B, true> {
-  decltype(B::prepare_hull(PacketHull{})) hull;
+  PacketHull hull;
   float tmax;  // the largest tmax of the packet's lanes
   SlotCull cull;
-  RAYVEC_INLINE unsigned of(const float (*b)[B::N]) const { return B::hits_hull(b, hull, tmax); }
+  RAYVEC_INLINE unsigned of(const float (*b)[B::N]) const { return B::hits_hull(b, hull, hull.tmin, tmax); }
   template <bool Mt>
   RAYVEC_INLINE uint64_t slots(const TriangleArrays& T, uint32_t begin, uint32_t end) const {
-    return cull.template slots<Mt>(T, begin, end);
+    return cull.template slots<Mt>(T, begin, end, hull);
   }
   RAYVEC_INLINE void set_tmax(float t) { tmax = t; }
 };
@@ -302,11 +302,11 @@ RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, 
     }
     if (uniform) {
       auto boxes = PK::template Forward<true>::load(rows, neg, bvh.box_epsilon);
-      const PacketHull hull = boxes.hull(active);
       const pfloat d[3] = {pfloat::load(s.soa[3]), pfloat::load(s.soa[4]), pfloat::load(s.soa[5])};
-      PacketChildren<B, true> children{
-          B::prepare_hull(hull), boxes.max_tmax(active),
-          slot_cull(bvh.packet_slot_cull, hull, hmax_lanes(m, active), d, active)};
+      // the hull built in place: a copy of its scalars, read back as vectors before their stores
+      // have left, stalls
+      PacketChildren<B, true> children{boxes.hull(active), boxes.max_tmax(active),
+                                       slot_cull(bvh.packet_slot_cull, hmax_lanes(m, active), d, active)};
       traverse(boxes, children);
     } else {
       auto boxes = PK::template Forward<false>::load(rows, neg, bvh.box_epsilon);

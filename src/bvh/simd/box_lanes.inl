@@ -34,13 +34,6 @@ struct PacketHull {
   int near[3], far[3];
 };
 
-// PacketHull in lanes: each value broadcast.
-template <class V>
-struct BoxHull {
-  V nr_lo[3], nr_hi[3], kn_hi[3], fr_lo[3], fr_hi[3], kf_lo[3], tmin;
-  int near[3], far[3];
-};
-
 template <class V>
 struct BoxPrepare {
   using RayData = BoxRay<V>;
@@ -66,22 +59,6 @@ struct BoxPrepare {
             far_row(near[0]),
             far_row(near[1]),
             far_row(near[2])};
-  }
-
-  static RAYVEC_INLINE BoxHull<V> prepare_hull(const PacketHull& h) {
-    BoxHull<V> b;
-    for (int a = 0; a < 3; ++a) {
-      b.nr_lo[a] = V::broadcast(h.nr_lo[a]);
-      b.nr_hi[a] = V::broadcast(h.nr_hi[a]);
-      b.kn_hi[a] = V::broadcast(h.kn_hi[a]);
-      b.fr_lo[a] = V::broadcast(h.fr_lo[a]);
-      b.fr_hi[a] = V::broadcast(h.fr_hi[a]);
-      b.kf_lo[a] = V::broadcast(h.kf_lo[a]);
-      b.near[a] = h.near[a];
-      b.far[a] = h.far[a];
-    }
-    b.tmin = V::broadcast(h.tmin);
-    return b;
   }
 
   static RAYVEC_INLINE RayData prepare(const float o[3], const float rdir[3], const int near[3]) {
@@ -126,13 +103,18 @@ struct BoxRows {
   // [nr_lo, nr_hi] is at one end, and k is at most kn_hi; the FMA rounds once and rounding is
   // monotonic, so fl(b·nr_x − kn_hi) for the smaller end is at most every lane's computed
   // distance. Exits mirror it. No NaN: the forward test's guard keeps every r' finite and nonzero.
-  static RAYVEC_INLINE unsigned hits_hull(const float* b, const BoxHull<V>& h, V tmax) {
-    V lo = h.tmin, hi = tmax;
+  // The hull stays scalars, broadcast where used (a load either way, and folded into the FMAs'
+  // operands on AVX-512): held as 19 registers it was stored and copied for every packet
+  // (benchmarks.md#decision-scalar-hull).
+  // tmin: h.tmin, or a smaller bound of the lanes' entries (packet_slot_cull.inl's 0).
+  static RAYVEC_INLINE unsigned hits_hull(const float* b, const PacketHull& h, V tmin, V tmax) {
+    V lo = tmin, hi = tmax;
     for (int a = 0; a < 3; ++a) {
       const V bn = V::load_aligned(b + long(h.near[a]) * Stride),
               bf = V::load_aligned(b + long(h.far[a]) * Stride);
-      lo = vmax(lo, vmin(fmsub(bn, h.nr_lo[a], h.kn_hi[a]), fmsub(bn, h.nr_hi[a], h.kn_hi[a])));
-      hi = vmin(hi, vmax(fmsub(bf, h.fr_lo[a], h.kf_lo[a]), fmsub(bf, h.fr_hi[a], h.kf_lo[a])));
+      const V kn = V::broadcast(h.kn_hi[a]), kf = V::broadcast(h.kf_lo[a]);
+      lo = vmax(lo, vmin(fmsub(bn, V::broadcast(h.nr_lo[a]), kn), fmsub(bn, V::broadcast(h.nr_hi[a]), kn)));
+      hi = vmin(hi, vmax(fmsub(bf, V::broadcast(h.fr_lo[a]), kf), fmsub(bf, V::broadcast(h.fr_hi[a]), kf)));
     }
     return bits(lo <= hi);
   }
@@ -184,8 +166,8 @@ struct BoxLanes<V, Children, std::integer_sequence<int, K...>> : BoxPrepare<V> {
                                      float eps, float* dist) {
     return (... | (BoxRows<V, N>::hits(b[0] + K * V::W, r, tmin, tmax, eps, dist + K * V::W) << (K * V::W)));
   }
-  static RAYVEC_INLINE unsigned hits_hull(const float (*b)[N], const BoxHull<V>& h, float tmax) {
-    const V t = V::broadcast(tmax);
-    return (... | (BoxRows<V, N>::hits_hull(b[0] + K * V::W, h, t) << (K * V::W)));
+  static RAYVEC_INLINE unsigned hits_hull(const float (*b)[N], const PacketHull& h, float tmin, float tmax) {
+    const V t0 = V::broadcast(tmin), t1 = V::broadcast(tmax);
+    return (... | (BoxRows<V, N>::hits_hull(b[0] + K * V::W, h, t0, t1) << (K * V::W)));
   }
 };
