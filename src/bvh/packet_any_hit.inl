@@ -142,26 +142,22 @@ unsigned bvh_occluded_packet(const BvhArrays& bvh, const TriangleArrays& tris, c
   if (kernels.isa == kThisIsa && kernels.intersector == Intersector::mt) leaf = PacketAnyLeaf::mt;
   if (kernels.isa == kThisIsa && kernels.intersector == Intersector::watertight)
     leaf = PacketAnyLeaf::watertight;
-  // per lane the single-ray kernels' constants (mt_any_hit_ray, watertight_any_limit)
-  alignas(64) float lo[P], hi[P], limit[P];
-  for (int k = 0; k < P; ++k) {
-    limit[k] = next_up(s.soa[7][k]);
-    hi[k] = limit[k] * kMtWiden;
-    lo[k] = mt_lower(s.soa[6][k]);
-  }
-  const MtAnyHitRay<pfloat> q{
-      {pfloat::load(s.soa[0]), pfloat::load(s.soa[1]), pfloat::load(s.soa[2]), pfloat::load(s.soa[3]),
-       pfloat::load(s.soa[4]), pfloat::load(s.soa[5]), pfloat::load(s.soa[6])},
-      pfloat::load(lo),
-      pfloat::load(hi),
-      pfloat::load(limit)};
+  // per lane the single-ray kernels' constants (mt_any_hit_ray, watertight_any_limit), formed in
+  // lanes: written lane by lane and read back as vectors they stall on store forwarding
+  const pfloat tmin = pfloat::load(s.soa[6]);
+  const pfloat limit = next_up(pfloat::load(s.soa[7]));
+  const MtAnyHitRay<pfloat> q{{pfloat::load(s.soa[0]), pfloat::load(s.soa[1]), pfloat::load(s.soa[2]),
+                               pfloat::load(s.soa[3]), pfloat::load(s.soa[4]), pfloat::load(s.soa[5]), tmin},
+                              mt_lower(tmin),
+                              limit * pfloat::broadcast(kMtWiden),
+                              limit};
   WatertightPacketRays<pfloat> wq;  // set only for the watertight leaf
   if (leaf == PacketAnyLeaf::watertight) {
     const float* const o[3] = {s.soa[0], s.soa[1], s.soa[2]};
     const float* const d[3] = {s.soa[3], s.soa[4], s.soa[5]};
     wq = watertight_packet_rays<pfloat>(o, d, s.soa[6], active);
   }
-  const PacketAnyRun run{leaf, q, wq, pfloat::load(limit), filters};
+  const PacketAnyRun run{leaf, q, wq, limit, filters};
   unsigned occluded = 0;
   with_packet_boxes<B, PK>(
       bvh, s, active, [&](auto& boxes, auto& children) __attribute__((always_inline)) {

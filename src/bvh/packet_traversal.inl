@@ -365,15 +365,13 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const 
       leaf = PacketLeaf::watertight;
     }
   }
-  alignas(64) float initial[P], lo[P];
-  for (int k = 0; k < P; ++k) {
-    initial[k] = next_up(tmax[k]);
-    lo[k] = leaf == PacketLeaf::mt ? mt_lower(s.soa[6][k]) : 0.0f;
-  }
+  // formed in lanes (see bvh_occluded_packet)
+  alignas(64) float initial[P];
+  next_up(pfloat::load(tmax)).store(initial);
   const MtPacketRays<pfloat> q{
       {pfloat::load(s.soa[0]), pfloat::load(s.soa[1]), pfloat::load(s.soa[2]), pfloat::load(s.soa[3]),
        pfloat::load(s.soa[4]), pfloat::load(s.soa[5]), tmin0},
-      pfloat::load(lo)};
+      leaf == PacketLeaf::mt ? mt_lower(tmin0) : zero};
   WatertightPacketRays<pfloat> wq;  // set only for the watertight leaf
   if (leaf == PacketLeaf::watertight) {
     const float* const o[3] = {s.soa[0], s.soa[1], s.soa[2]};

@@ -242,6 +242,13 @@ RAYVEC_INLINE float mt_lower(float tmin) {
   if (tmin > 0.0f) return tmin * kMtNarrow;
   return tmin == 0.0f ? 0.0f : -__builtin_inff();
 }
+// mt_lower lane by lane.
+template <class V>
+RAYVEC_INLINE V mt_lower(V tmin) {
+  const V zero = V::broadcast(0.0f);
+  const V at_zero = select((tmin >= zero) & (tmin <= zero), V::broadcast(-__builtin_inff()), zero);
+  return select(tmin > zero, at_zero, tmin * V::broadcast(kMtNarrow));
+}
 
 // One ray against [begin, end), the winner kept as scalars: a step where a lane passes the exact
 // test is reduced at once (its nearest t by one hmin; of equal t its lowest lane, the lowest id, as

@@ -141,6 +141,21 @@ RAYVEC_INLINE vfloat vmax(vfloat a, vfloat b) { return {_mm256_max_ps(a.v, b.v)}
 // only: select and bits read nothing else.
 RAYVEC_INLINE vmaskf sign_mask(vfloat a) { return {a.v}; }
 
+// next_up (kernels/moller_trumbore.inl) lane by lane: the smallest value greater than x, x itself
+// for +inf and NaN; ±0 gives the smallest subnormal, −inf the most negative finite value.
+RAYVEC_INLINE vfloat next_up(vfloat x) {
+  const __m256i b = _mm256_castps_si256(x.v), one = _mm256_set1_epi32(1);
+  const __m256 zero = _mm256_setzero_ps();
+  // a positive x moves away from zero, a negative one toward it: one unit of its bits either way
+  __m256 r =
+      _mm256_blendv_ps(_mm256_castsi256_ps(_mm256_sub_epi32(b, one)),
+                       _mm256_castsi256_ps(_mm256_add_epi32(b, one)), _mm256_cmp_ps(x.v, zero, _CMP_GT_OQ));
+  r = _mm256_blendv_ps(r, _mm256_castsi256_ps(one), _mm256_cmp_ps(x.v, zero, _CMP_EQ_OQ));
+  const __m256 keep = _mm256_or_ps(_mm256_cmp_ps(x.v, x.v, _CMP_UNORD_Q),
+                                   _mm256_cmp_ps(x.v, _mm256_set1_ps(__builtin_inff()), _CMP_EQ_OQ));
+  return {_mm256_blendv_ps(r, x.v, keep)};
+}
+
 // The smallest and the largest of v over `lanes` (bit k: lane k; nonzero).
 RAYVEC_INLINE float hmin_lanes(vfloat v, unsigned lanes) {
   return hmin(select(mask_from_bits(v, lanes), vfloat::broadcast(__builtin_inff()), v));

@@ -156,6 +156,20 @@ RAYVEC_INLINE vfloat vmax(vfloat a, vfloat b) { return {_mm512_maskz_max_ps(__mm
 // The lanes whose sign bit is set (negative, −0, or a NaN with its sign set).
 RAYVEC_INLINE vmaskf sign_mask(vfloat a) { return {_mm512_movepi32_mask(_mm512_castps_si512(a.v))}; }
 
+// next_up (kernels/moller_trumbore.inl) lane by lane: the smallest value greater than x, x itself
+// for +inf and NaN; ±0 gives the smallest subnormal, −inf the most negative finite value.
+RAYVEC_INLINE vfloat next_up(vfloat x) {
+  const __m512i b = _mm512_castps_si512(x.v), one = _mm512_set1_epi32(1);
+  const __m512 zero = _mm512_setzero_ps();
+  // a positive x moves away from zero, a negative one toward it: one unit of its bits either way
+  __m512i r =
+      _mm512_mask_add_epi32(_mm512_sub_epi32(b, one), _mm512_cmp_ps_mask(x.v, zero, _CMP_GT_OQ), b, one);
+  r = _mm512_mask_mov_epi32(r, _mm512_cmp_ps_mask(x.v, zero, _CMP_EQ_OQ), one);
+  const __mmask16 keep = __mmask16(_mm512_cmp_ps_mask(x.v, x.v, _CMP_UNORD_Q) |
+                                   _mm512_cmp_ps_mask(x.v, _mm512_set1_ps(__builtin_inff()), _CMP_EQ_OQ));
+  return {_mm512_mask_mov_ps(_mm512_castsi512_ps(r), keep, x.v)};
+}
+
 // The smallest and the largest of v over `lanes` (bit k: lane k; nonzero).
 RAYVEC_INLINE float hmin_lanes(vfloat v, unsigned lanes) {
   return _mm512_mask_reduce_min_ps(__mmask16(lanes), v.v);

@@ -131,6 +131,10 @@ RAYVEC_INLINE VPair<V> select(VPairMask<V> m, VPair<V> a, VPair<V> b) {
   return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)};
 }
 template <class V>
+RAYVEC_INLINE VPair<V> next_up(VPair<V> x) {
+  return {next_up(x.lo), next_up(x.hi)};
+}
+template <class V>
 RAYVEC_INLINE VPairMask<V> sign_mask(VPair<V> a) {
   return {sign_mask(a.lo), sign_mask(a.hi)};
 }
