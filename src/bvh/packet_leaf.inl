@@ -110,11 +110,15 @@ RAYVEC_INLINE unsigned packet_leaf_finish(const TriangleArrays& T, unsigned foun
     if (t < hit.t || (t == hit.t && (hit.tri < 0 || id < hit.tri))) {
       hit = Hit{t + 0.0f, us[k], vs[k], id};  // no −0, as mt_finish
       changed |= 1u << k;
-      if (t < limit[k]) {
-        limit[k] = t;
-        initial[k] = next_up(t);
-      }
     }
+  }
+  // the limits lowered in lanes: read back as vectors by the traversal and the next leaf, lane-wise
+  // stores would stall on store forwarding
+  if (changed != 0) {
+    const V lim = V::load(limit);
+    const typename V::Mask lower = mask_from_bits(V{}, changed) & (t_best < lim);
+    select(lower, lim, t_best).store(limit);
+    select(lower, V::load(initial), next_up(t_best)).store(initial);
   }
   return changed;
 }
