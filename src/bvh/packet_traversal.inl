@@ -136,7 +136,7 @@ struct PacketChildren<B, true> {
 
 // The traversal proper, from the root with the lanes `lanes`, box tests by `boxes` (PacketBoxes
 // or PK::Forward), children pre-tested by `children`; the state set up by bvh_closest_packet.
-// `boxes` and `children` by reference: passed by value, their 1.3 KB of registers are copied onto
+// `boxes` and `children` by reference: passed by value, the box state's registers are copied onto
 // the stack for every packet (rep movsq; benchmarks.md#decision-packet-box-by-reference).
 template <class B, class PK, class Boxes, bool WithHull>
 void bvh_packet_traverse(const BvhArrays& bvh, const TriangleArrays& tris, const TriangleKernels& kernels,
