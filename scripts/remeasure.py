@@ -1,0 +1,224 @@
+#!/usr/bin/env python3
+"""Re-measures on this machine the Decisions of docs/benchmarks.md that were measured on one vendor's
+CPUs only (its table "Re-measuring a Decision"): for each, builds the commit the Decision was
+measured against (scripts/build_at.sh, cached under /tmp/rayvec-at) and runs the Decision's commands
+with that binary as `old` and this build's as `new`, in alternating rounds. Prints Markdown: per
+Decision, each command and what it measured. Progress goes to stderr.
+
+    scripts/remeasure.py [--build DIR] [--work DIR] [--only NAME ...] [--list]
+
+  --build DIR   the `new` build (default build/)
+  --work DIR    where the inputs are made the first time and reused (default /tmp/rayvec-targets,
+                the folder scripts/targets.py uses)
+  --only NAME   only these Decisions (their anchors without "decision-"; --list names them)
+  --list        print the Decisions, their commits and commands, and run nothing
+
+Two kinds of command:
+  rays  scripts/bench_rays_rounds.py: `bench rays --vs-embree` of old and new in shuffled order per
+        round; per ray set the ratio to Embree and `rel`, new over old in the same round
+  cpu   the same rayvec command line with each binary, alternating; the user + system CPU time of
+        each whole process (wait4), medians and the median of new / old per round (below 1: new is
+        faster)
+AVX-512 commands are skipped on a CPU without AVX-512 (`rayvec info`), Embree ones without the
+Embree module. Building the commits takes a few minutes each on two cores; a full run about an hour.
+"""
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ASSIMP = "/usr/share/assimp/models/OBJ"
+
+# Mesh names the commands use, and how each is found or made in --work.
+MESHES = {
+    "sphere4k": ("sphere4k.obj", ["make_bumpy_sphere.py", "sphere4k.obj", "--rings", "32", "--segments", "64"]),
+    "sphere1m": ("sphere1m.obj", ["make_bumpy_sphere.py", "sphere1m.obj", "--scene", "sphere1m.json"]),
+    "sphere40k": ("sphere40k.obj", ["make_bumpy_sphere.py", "sphere40k.obj", "--rings", "100", "--segments", "200"]),
+    "mod2": ("mod2.obj", ["make_paper_scene.py", "mod2.obj", "mod2.csv"]),
+    "WusonOBJ": (f"{ASSIMP}/WusonOBJ.obj", None),
+    "regr01": (f"{ASSIMP}/regr01.obj", None),
+    "sphere.obj": (f"{ROOT}/scenes/models/sphere.obj", None),
+}
+
+
+def rays(rounds, mesh, options):
+    return ("rays", rounds, mesh, options)
+
+
+def cpu(rounds, args):
+    return ("cpu", rounds, None, args)
+
+
+# (anchor in docs/benchmarks.md, the commit it was measured against, its commands). `{mesh}` in a cpu
+# command is that mesh's path, `{mod2.csv}` the paper scene's rays, `{vis}` the verts and faces of
+# sphere40k for `rayvec visibility`, `{out}` a scratch output file in --work.
+DECISIONS = (
+    ("decision-any-hit-leaf-lanes", "0a67d40",
+     [rays(6, "WusonOBJ", "--isa avx512 --size 1024x1024"), rays(6, "sphere4k", "--isa avx512 --size 1024x1024"),
+      rays(6, "WusonOBJ", "--isa avx2 --size 1024x1024"),
+      rays(6, "WusonOBJ", "--isa avx512 --size 1024x1024 --intersector watertight")]),
+    ("decision-leaf-block-choice", "4c43890",
+     [rays(8, "regr01", "--isa avx512 --size 1024x1024"), rays(6, "sphere.obj", "--isa avx512 --size 1024x1024"),
+      rays(6, "WusonOBJ", "--isa avx512 --size 1024x1024")]),
+    ("decision-one-or-two-children", "4e1cb89",
+     [rays(6, "sphere1m", "--isa avx2 --size 1024x1024"), rays(6, "sphere1m", "--isa avx512 --size 1024x1024")]),
+    ("decision-packet-slot-cull", "9864796", [rays(4, "sphere4k", "--isa avx512 --size 512x512")]),
+    ("decision-crossed-group-test", "428253f",
+     [cpu(4, "bench paper --models mod2 --no-baselines --no-scaling --threads 1 --isa avx512"),
+      cpu(4, "hits --mesh {mod2} --rays {mod2.csv} --accel brute --threads 1 --isa avx512 -o {out}"),
+      cpu(4, "visibility {vis} --origin 0,0,-3 --accel brute --threads 1 --isa avx512 -o {out}"),
+      cpu(4, "visibility {vis} --origin 0,0,-3 --accel brute --threads 1 --isa avx2 -o {out}")]),
+    ("decision-scalar-hull", "b89f19c",
+     [rays(6, "regr01", "--isa avx512 --size 1024x1024"), rays(6, "sphere4k", "--isa avx512 --size 1024x1024"),
+      rays(6, "regr01", "--isa avx2 --size 1024x1024"), rays(6, "WusonOBJ", "--isa avx2 --size 1024x1024")]),
+    ("decision-binning-lanes", "7183f36",
+     [cpu(5, "bench rays {sphere1m} --threads 1 --builds 7 --size 16x16 --repeats 1")]),
+)
+
+
+def log(message):
+    print(message, file=sys.stderr, flush=True)
+
+
+def cpu_seconds(cmd):
+    """Runs cmd (output discarded); the user + system CPU seconds of the process."""
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(proc.pid, 0)
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit(f"remeasure: {' '.join(cmd)} failed:\n{proc.stderr.read().decode()[-2000:]}")
+    return usage.ru_utime + usage.ru_stime
+
+
+class Remeasure:
+    def __init__(self, args):
+        self.new = os.path.abspath(os.path.join(args.build, "rayvec"))
+        self.work = os.path.abspath(args.work)
+        os.makedirs(self.work, exist_ok=True)
+        info = subprocess.run([self.new, "info"], capture_output=True, text=True, check=True).stdout
+        self.has_avx512 = "avx512f=1 avx512dq=1" in info and "zmm=1" in info
+        self.has_embree = subprocess.run([self.new, "bench", "rays", "--help"], capture_output=True,
+                                         text=True).stdout.find("--vs-embree") >= 0 and self.embree_module()
+
+    def embree_module(self):
+        probe = subprocess.run([self.new, "bench", "rays", MESHES["sphere.obj"][0], "--vs-embree", "--size", "4x4",
+                                "--builds", "1", "--repeats", "1", "--threads", "1"], capture_output=True)
+        return probe.returncode == 0
+
+    def mesh(self, name):
+        path, maker = MESHES[name]
+        if maker is None:
+            return path
+        path = os.path.join(self.work, path)
+        if not os.path.exists(path):
+            log(f"remeasure: making {name}")
+            subprocess.run([sys.executable, f"{ROOT}/scripts/{maker[0]}"] + maker[1:], cwd=self.work, check=True)
+        return path
+
+    def vis(self):
+        verts, faces = os.path.join(self.work, "sphere40k_verts.csv"), os.path.join(self.work, "sphere40k_faces.csv")
+        if not os.path.exists(faces):
+            subprocess.run([sys.executable, f"{ROOT}/scripts/obj_to_visibility.py", self.mesh("sphere40k"), verts,
+                            faces], check=True)
+        return f"--verts {verts} --faces {faces}"
+
+    def expand(self, args):
+        words = []
+        for w in args.split():
+            if w == "{vis}":
+                words += self.vis().split()
+            elif w == "{out}":
+                words.append(os.path.join(self.work, "remeasure_out.csv"))
+            elif w == "{mod2.csv}":
+                self.mesh("mod2")
+                words.append(os.path.join(self.work, "mod2.csv"))
+            elif w.startswith("{") and w.endswith("}"):
+                words.append(self.mesh(w[1:-1]))
+            else:
+                words.append(w)
+        return words
+
+    def runnable(self, command):
+        kind, _, _, options = command
+        if "avx512" in options and not self.has_avx512:
+            return "skipped: no AVX-512 on this CPU"
+        if kind == "rays" and not self.has_embree:
+            return "skipped: this build has no Embree rival (libembree-dev, then rebuild)"
+        return None
+
+    def measure(self, old, command):
+        kind, rounds, mesh, options = command
+        if kind == "rays":
+            cmd = [sys.executable, f"{ROOT}/scripts/bench_rays_rounds.py", str(rounds), self.mesh(mesh), options,
+                   f"old={old}", f"new={self.new}"]
+            return subprocess.run(cmd, capture_output=True, text=True, check=True).stdout.strip()
+        args = self.expand(options)
+        times = {"old": [], "new": []}
+        for r in range(rounds):
+            for name, binary in ((("old", old), ("new", self.new)) if r % 2 == 0 else
+                                 (("new", self.new), ("old", old))):
+                times[name].append(cpu_seconds([binary] + args))
+        rel = statistics.median(n / o for n, o in zip(times["new"], times["old"]))
+        return (f"old {statistics.median(times['old']):.3f} s, new {statistics.median(times['new']):.3f} s CPU "
+                f"(medians of {rounds}); new / old per round, median {rel:.3f}")
+
+    def run(self, decisions):
+        print(f"# Decisions re-measured on {platform_line(self.new)}\n")
+        for anchor, commit, commands in decisions:
+            runnable = [c for c in commands if self.runnable(c) is None]
+            print(f"## [{anchor}](docs/benchmarks.md#{anchor}) against {commit}\n")
+            old = None
+            if runnable:
+                log(f"remeasure: building {commit} for {anchor}")
+                old = subprocess.run([f"{ROOT}/scripts/build_at.sh", commit], capture_output=True, text=True,
+                                     check=True).stdout.strip()
+            for command in commands:
+                label = describe(command)
+                why = self.runnable(command)
+                if why:
+                    print(f"- {label}: {why}")
+                    continue
+                log(f"remeasure: {anchor}: {label}")
+                print(f"- {label}:\n\n```\n{self.measure(old, command)}\n```\n")
+            print()
+
+
+def platform_line(binary):
+    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
+    head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True,
+                          text=True).stdout.strip()
+    return f"{cpu}, {os.cpu_count()} CPUs, commit {head} ({binary})"
+
+
+def describe(command):
+    kind, rounds, mesh, options = command
+    if kind == "rays":
+        return f"`bench_rays_rounds.py {rounds} {mesh} \"{options}\"`"
+    return f"`rayvec {options}`, {rounds} alternating rounds"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--work", default="/tmp/rayvec-targets")
+    parser.add_argument("--only", nargs="+", default=[])
+    parser.add_argument("--list", action="store_true")
+    args = parser.parse_args()
+    names = {a.removeprefix("decision-"): (a, c, cmds) for a, c, cmds in DECISIONS}
+    unknown = [n for n in args.only if n not in names]
+    if unknown:
+        print(f"remeasure: no Decision {', '.join(unknown)}; --list names them", file=sys.stderr)
+        sys.exit(2)
+    chosen = [names[n] for n in args.only] if args.only else list(DECISIONS)
+    if args.list:
+        for anchor, commit, commands in chosen:
+            print(f"{anchor} {commit}")
+            for command in commands:
+                print(f"  {describe(command)}")
+        return
+    Remeasure(args).run(chosen)
+
+
+if __name__ == "__main__":
+    main()
