@@ -1,0 +1,80 @@
+// The packets' per-lane rules in SIMD lanes against their scalar definitions, bit for bit, on the
+// values where they differ from plain arithmetic: next_up is the next float toward +inf (±0 gives
+// the smallest subnormal, −inf the most negative finite value, +inf and NaN stay), and mt_lower is
+// tmin·(1 − 2^-20) for tmin > 0, 0 for ±0 and −inf otherwise (NaN included). The packet traversals
+// form both in lanes (bvh/packet_any_hit.inl, packet_traversal.inl, packet_leaf.inl); a lane that
+// disagreed would move a packet's closed end t <= tmax away from the single ray's. Every ISA with
+// vector lanes; ISAs the CPU lacks are skipped and named.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "platform/isa.h"
+#include "simd/lane_rules.h"
+
+namespace rayvec {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kNarrow = 1.0f - 0x1p-20f;  // kernels/mt_float.inl's kMtNarrow
+
+std::vector<float> hard_values() {
+  const float denorm = std::numeric_limits<float>::denorm_min(), tiny = std::numeric_limits<float>::min();
+  const float big = std::numeric_limits<float>::max(), nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<float> v = {
+      0.0f,  -0.0f,  denorm,    -denorm,   tiny, -tiny, 1.0f, -1.0f, 1.5f,   -1.5f,
+      2.0f,  -2.0f,  big,       -big,      kInf, -kInf, nan,  -nan,  1e-30f, std::nextafter(2.0f, 0.0f),
+      3e38f, -3e38f, 0x1p-126f, -0x1p-149f};
+  std::mt19937 rng(7);
+  while (v.size() % 16 != 0 || v.size() < 256) v.push_back(std::bit_cast<float>(uint32_t(rng())));
+  return v;
+}
+
+void expect_same_bits(float want, float got, float x, const char* rule, Isa isa) {
+  if (std::isnan(want)) {
+    EXPECT_TRUE(std::isnan(got)) << rule << " " << isa_name(isa) << " of " << x;
+  } else {
+    EXPECT_EQ(std::bit_cast<uint32_t>(want), std::bit_cast<uint32_t>(got))
+        << rule << " " << isa_name(isa) << " of " << x << ": " << want << " wanted, " << got << " got";
+  }
+}
+
+class LaneRules : public ::testing::TestWithParam<Isa> {
+ protected:
+  void SetUp() override {
+    if (!isa_supported(GetParam())) GTEST_SKIP() << isa_name(GetParam()) << " is not available on this CPU";
+  }
+  test::LaneRules rules() const {
+    return GetParam() == Isa::avx2 ? test::lane_rules_avx2() : test::lane_rules_avx512();
+  }
+};
+
+TEST_P(LaneRules, NextUpIsTheNextFloatTowardInfinity) {
+  const std::vector<float> in = hard_values();
+  std::vector<float> out(in.size());
+  rules().next_up(in.data(), out.data(), int(in.size()));
+  for (std::size_t i = 0; i < in.size(); ++i)
+    expect_same_bits(std::nextafter(in[i], kInf), out[i], in[i], "next_up", GetParam());
+}
+
+TEST_P(LaneRules, MtLowerNarrowsPositiveTminKeepsZeroAndDropsTheRest) {
+  const std::vector<float> in = hard_values();
+  std::vector<float> out(in.size());
+  rules().mt_lower(in.data(), out.data(), int(in.size()));
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const float x = in[i];
+    const float want = x > 0.0f ? x * kNarrow : x == 0.0f ? 0.0f : -kInf;
+    expect_same_bits(want, out[i], x, "mt_lower", GetParam());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(VectorIsas, LaneRules, ::testing::Values(Isa::avx2, Isa::avx512),
+                         [](const auto& info) { return std::string(isa_name(info.param)); });
+
+}  // namespace
+}  // namespace rayvec
