@@ -10,16 +10,8 @@ namespace rayvec::avx512 {
 #include "kernels/moller_trumbore.inl"
 #include "kernels/mt_float.inl"
 
-namespace {
-template <class V>
-void next_up_all(const float* in, float* out, int n) {
-  for (int i = 0; i < n; i += V::W) next_up(V::load(in + i)).store(out + i);
-}
-void next_up_lanes(const float* in, float* out, int n) { next_up_all<vfloat>(in, out, n); }
-void mt_lower_lanes(const float* in, float* out, int n) {
-  for (int i = 0; i < n; i += vfloat::W) mt_lower(vfloat::load(in + i)).store(out + i);
-}
-}  // namespace
+using NextUpLanes = vfloat;
+#include "lane_rules.inl"
 
 }  // namespace rayvec::avx512
 
