@@ -1,17 +1,20 @@
 #!/usr/bin/env python3
 """Re-measures on this machine the Decisions of docs/benchmarks.md that were measured on one vendor's
 CPUs only (its table "Re-measuring a Decision"): for each, builds the commit the Decision was
-measured against (scripts/build_at.sh, cached under /tmp/rayvec-at) and runs the Decision's commands
-with that binary as `old` and this build's as `new`, in alternating rounds. Prints Markdown: per
-Decision, each command and what it measured. Progress goes to stderr.
+measured against and the commit that made it (scripts/build_at.sh, cached under /tmp/rayvec-at) and
+runs the Decision's commands with the two as `old` and `new`, in alternating rounds — the change
+alone, without what came later (--against-build: this build as `new` instead, everything since the
+old commit). Prints Markdown: per Decision, each command and what it measured. Progress goes to
+stderr.
 
-    scripts/remeasure.py [--build DIR] [--work DIR] [--only NAME ...] [--list]
+    scripts/remeasure.py [--build DIR] [--work DIR] [--only NAME ...] [--list] [--against-build]
 
-  --build DIR   the `new` build (default build/)
+  --build DIR   this build (default build/): its `rayvec info` tells the CPU's ISAs
   --work DIR    where the inputs are made the first time and reused (default /tmp/rayvec-targets,
                 the folder scripts/targets.py uses)
   --only NAME   only these Decisions (their anchors without "decision-"; --list names them)
   --list        print the Decisions, their commits and commands, and run nothing
+  --against-build  `new` is this build, not the Decision's commit
 
 Two kinds of command:
   rays  scripts/bench_rays_rounds.py: `bench rays --vs-embree` of old and new in shuffled order per
@@ -51,29 +54,30 @@ def cpu(rounds, args):
     return ("cpu", rounds, None, args)
 
 
-# (anchor in docs/benchmarks.md, the commit it was measured against, its commands). `{mesh}` in a cpu
+# (anchor in docs/benchmarks.md, the commit it was measured against, the commit that made it, its
+# commands). `{mesh}` in a cpu
 # command is that mesh's path, `{mod2.csv}` the paper scene's rays, `{vis}` the verts and faces of
 # sphere40k for `rayvec visibility`, `{out}` a scratch output file in --work.
 DECISIONS = (
-    ("decision-any-hit-leaf-lanes", "0a67d40",
+    ("decision-any-hit-leaf-lanes", "0a67d40", "1973db9",
      [rays(6, "WusonOBJ", "--isa avx512 --size 1024x1024"), rays(6, "sphere4k", "--isa avx512 --size 1024x1024"),
       rays(6, "WusonOBJ", "--isa avx2 --size 1024x1024"),
       rays(6, "WusonOBJ", "--isa avx512 --size 1024x1024 --intersector watertight")]),
-    ("decision-leaf-block-choice", "4c43890",
+    ("decision-leaf-block-choice", "4c43890", "ebaa05b",
      [rays(8, "regr01", "--isa avx512 --size 1024x1024"), rays(6, "sphere.obj", "--isa avx512 --size 1024x1024"),
       rays(6, "WusonOBJ", "--isa avx512 --size 1024x1024")]),
-    ("decision-one-or-two-children", "4e1cb89",
+    ("decision-one-or-two-children", "4e1cb89", "d08411a",
      [rays(6, "sphere1m", "--isa avx2 --size 1024x1024"), rays(6, "sphere1m", "--isa avx512 --size 1024x1024")]),
-    ("decision-packet-slot-cull", "9864796", [rays(4, "sphere4k", "--isa avx512 --size 512x512")]),
-    ("decision-crossed-group-test", "428253f",
+    ("decision-packet-slot-cull", "9864796", "1654d97", [rays(4, "sphere4k", "--isa avx512 --size 512x512")]),
+    ("decision-crossed-group-test", "428253f", "d5300e4",
      [cpu(4, "bench paper --models mod2 --no-baselines --no-scaling --threads 1 --isa avx512"),
       cpu(4, "hits --mesh {mod2} --rays {mod2.csv} --accel brute --threads 1 --isa avx512 -o {out}"),
       cpu(4, "visibility {vis} --origin 0,0,-3 --accel brute --threads 1 --isa avx512 -o {out}"),
       cpu(4, "visibility {vis} --origin 0,0,-3 --accel brute --threads 1 --isa avx2 -o {out}")]),
-    ("decision-scalar-hull", "b89f19c",
+    ("decision-scalar-hull", "b89f19c", "772ac01",
      [rays(6, "regr01", "--isa avx512 --size 1024x1024"), rays(6, "sphere4k", "--isa avx512 --size 1024x1024"),
       rays(6, "regr01", "--isa avx2 --size 1024x1024"), rays(6, "WusonOBJ", "--isa avx2 --size 1024x1024")]),
-    ("decision-binning-lanes", "7183f36",
+    ("decision-binning-lanes", "7183f36", "8f58963",
      [cpu(5, "bench rays {sphere1m} --threads 1 --builds 7 --size 16x16 --repeats 1")]),
 )
 
@@ -94,6 +98,7 @@ def cpu_seconds(cmd):
 class Remeasure:
     def __init__(self, args):
         self.new = os.path.abspath(os.path.join(args.build, "rayvec"))
+        self.against_build = args.against_build
         self.work = os.path.abspath(args.work)
         os.makedirs(self.work, exist_ok=True)
         info = subprocess.run([self.new, "info"], capture_output=True, text=True, check=True).stdout
@@ -147,32 +152,37 @@ class Remeasure:
             return "skipped: this build has no Embree rival (libembree-dev, then rebuild)"
         return None
 
-    def measure(self, old, command):
+    def build(self, commit, anchor):
+        log(f"remeasure: building {commit} for {anchor}")
+        return subprocess.run([f"{ROOT}/scripts/build_at.sh", commit], capture_output=True, text=True,
+                              check=True).stdout.strip()
+
+    def measure(self, old, new, command):
         kind, rounds, mesh, options = command
         if kind == "rays":
             cmd = [sys.executable, f"{ROOT}/scripts/bench_rays_rounds.py", str(rounds), self.mesh(mesh), options,
-                   f"old={old}", f"new={self.new}"]
+                   f"old={old}", f"new={new}"]
             return subprocess.run(cmd, capture_output=True, text=True, check=True).stdout.strip()
         args = self.expand(options)
         times = {"old": [], "new": []}
         for r in range(rounds):
-            for name, binary in ((("old", old), ("new", self.new)) if r % 2 == 0 else
-                                 (("new", self.new), ("old", old))):
+            for name, binary in ((("old", old), ("new", new)) if r % 2 == 0 else (("new", new), ("old", old))):
                 times[name].append(cpu_seconds([binary] + args))
         rel = statistics.median(n / o for n, o in zip(times["new"], times["old"]))
         return (f"old {statistics.median(times['old']):.3f} s, new {statistics.median(times['new']):.3f} s CPU "
                 f"(medians of {rounds}); new / old per round, median {rel:.3f}")
 
     def run(self, decisions):
-        print(f"# Decisions re-measured on {platform_line(self.new)}\n")
-        for anchor, commit, commands in decisions:
+        against = f"; new: {self.new}" if self.against_build else ""
+        print(f"# Decisions re-measured on {platform_line()}{against}\n")
+        for anchor, commit, made, commands in decisions:
             runnable = [c for c in commands if self.runnable(c) is None]
-            print(f"## [{anchor}](docs/benchmarks.md#{anchor}) against {commit}\n")
+            new = self.new if self.against_build else made
+            print(f"## [{anchor}](docs/benchmarks.md#{anchor}): {commit} → {new}\n")
             old = None
             if runnable:
-                log(f"remeasure: building {commit} for {anchor}")
-                old = subprocess.run([f"{ROOT}/scripts/build_at.sh", commit], capture_output=True, text=True,
-                                     check=True).stdout.strip()
+                old = self.build(commit, anchor)
+                new = self.new if self.against_build else self.build(made, anchor)
             for command in commands:
                 label = describe(command)
                 why = self.runnable(command)
@@ -180,15 +190,15 @@ class Remeasure:
                     print(f"- {label}: {why}")
                     continue
                 log(f"remeasure: {anchor}: {label}")
-                print(f"- {label}:\n\n```\n{self.measure(old, command)}\n```\n")
+                print(f"- {label}:\n\n```\n{self.measure(old, new, command)}\n```\n")
             print()
 
 
-def platform_line(binary):
+def platform_line():
     cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
     head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True,
                           text=True).stdout.strip()
-    return f"{cpu}, {os.cpu_count()} CPUs, commit {head} ({binary})"
+    return f"{cpu}, {os.cpu_count()} CPUs (scripts at {head})"
 
 
 def describe(command):
@@ -204,16 +214,17 @@ def main():
     parser.add_argument("--work", default="/tmp/rayvec-targets")
     parser.add_argument("--only", nargs="+", default=[])
     parser.add_argument("--list", action="store_true")
+    parser.add_argument("--against-build", action="store_true")
     args = parser.parse_args()
-    names = {a.removeprefix("decision-"): (a, c, cmds) for a, c, cmds in DECISIONS}
+    names = {d[0].removeprefix("decision-"): d for d in DECISIONS}
     unknown = [n for n in args.only if n not in names]
     if unknown:
         print(f"remeasure: no Decision {', '.join(unknown)}; --list names them", file=sys.stderr)
         sys.exit(2)
     chosen = [names[n] for n in args.only] if args.only else list(DECISIONS)
     if args.list:
-        for anchor, commit, commands in chosen:
-            print(f"{anchor} {commit}")
+        for anchor, commit, made, commands in chosen:
+            print(f"{anchor} {commit} {made}")
             for command in commands:
                 print(f"  {describe(command)}")
         return
