@@ -212,9 +212,8 @@ int run(const Options& o) {
     std::printf(
         "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
         "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
-        "\"leaf_call\":\"%s\",\"leaf_block\":%u,\"merge_steps\":%d,\"split_budget\":%.3f,\"references_per_"
-        "tri\":%.4f,"
-        "\"stored_normals\":%s,\"packet_slot_cull\":%s,"
+        "\"leaf_call\":\"%s\",\"leaf_block\":%u,\"merge_steps\":%d,\"split_budget\":%.3f,"
+        "\"references_per_tri\":%.4f,\"stored_normals\":%s,\"packet_slot_cull\":%s,"
         "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
         "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
         json_string(o.model).c_str(), mesh.size(), width, height, json_string(cpu_features().brand).c_str(),
@@ -253,9 +252,9 @@ int run(const Options& o) {
                   ? " (512-bit operations at half rate here: 16-wide kernels keep no edge in lanes a cycle)"
                   : "");
   std::printf(
-      "bvh: %d-wide, %u nodes, %u leaves (SAH leaf block %u, merged up to %d kernel steps), %.3f references "
-      "per triangle "
-      "(spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, packet slot cull %s; "
+      "bvh: %d-wide, %u nodes, %u leaves (SAH leaf block %u, merged up to %d kernel steps), "
+      "%.3f references per triangle (spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, "
+      "packet slot cull %s; "
       "build %.4f s; %.1f bytes/triangle (nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), bvh->leaf_block(),
       o.merge_steps, refs_per_tri, double(split_budget), bvh->tree().depth(),

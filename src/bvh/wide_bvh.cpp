@@ -260,6 +260,15 @@ WideBvh::WideBvh(const BinaryBvh& tree, int width, CollapseRule rule, uint32_t m
 }
 
 namespace {
+// A leaf reference's slots [begin, end).
+struct LeafSlots {
+  uint32_t begin, end;
+};
+LeafSlots leaf_slots(uint32_t ref) {
+  const uint32_t begin = (ref >> 5) & (kMaxLeafBegin - 1);
+  return {begin, begin + (ref & 31u) + 1};
+}
+
 template <int N>
 double tree_sah_cost(const BvhArrays& a, uint32_t step_slots) {
   const auto* nodes = static_cast<const WideNode<N>*>(a.nodes);
@@ -276,8 +285,8 @@ double tree_sah_cost(const BvhArrays& a, uint32_t step_slots) {
       const BBox child{{b[0][k], b[1][k], b[2][k]}, {b[3][k], b[4][k], b[5][k]}};
       node.grow(child);
       if (!(ref & kLeafFlag)) continue;
-      const uint32_t begin = (ref >> 5) & (kMaxLeafBegin - 1), last = begin + (ref & 31u);
-      cost += double(child.half_area()) * double(last / step_slots - begin / step_slots + 1);
+      const LeafSlots l = leaf_slots(ref);
+      cost += double(child.half_area()) * double((l.end - 1) / step_slots - l.begin / step_slots + 1);
     }
     cost += double(node.half_area());
   }
@@ -290,8 +299,8 @@ void sort_leaves(const BvhArrays& a, std::vector<uint32_t>& order) {
   for (uint32_t n = 0; n < a.node_count; ++n)
     for (const uint32_t ref : nodes[n].ref) {
       if (ref == kEmptyRef || !(ref & kLeafFlag)) continue;
-      const uint32_t begin = (ref >> 5) & (kMaxLeafBegin - 1), end = begin + (ref & 31u) + 1;
-      const auto first = order.begin() + begin, last = order.begin() + end;
+      const LeafSlots l = leaf_slots(ref);
+      const auto first = order.begin() + l.begin, last = order.begin() + l.end;
       if (!std::is_sorted(first, last)) std::sort(first, last);  // kPaddingSlot is the largest
     }
 }
