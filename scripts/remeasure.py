@@ -31,19 +31,12 @@ import statistics
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-ASSIMP = "/usr/share/assimp/models/OBJ"
+import targets  # the work folder's inputs, the ISA and Embree probes, whole-process CPU times
+from targets import ASSIMP, ROOT, log
 
-# Mesh names the commands use, and how each is found or made in --work.
-MESHES = {
-    "sphere4k": ("sphere4k.obj", ["make_bumpy_sphere.py", "sphere4k.obj", "--rings", "32", "--segments", "64"]),
-    "sphere1m": ("sphere1m.obj", ["make_bumpy_sphere.py", "sphere1m.obj", "--scene", "sphere1m.json"]),
-    "sphere40k": ("sphere40k.obj", ["make_bumpy_sphere.py", "sphere40k.obj", "--rings", "100", "--segments", "200"]),
-    "mod2": ("mod2.obj", ["make_paper_scene.py", "mod2.obj", "mod2.csv"]),
-    "WusonOBJ": (f"{ASSIMP}/WusonOBJ.obj", None),
-    "regr01": (f"{ASSIMP}/regr01.obj", None),
-    "sphere.obj": (f"{ROOT}/scenes/models/sphere.obj", None),
-}
+# Meshes the commands name that are not made in --work (targets.Targets makes the others).
+FILES = {"WusonOBJ": f"{ASSIMP}/WusonOBJ.obj", "regr01": f"{ASSIMP}/regr01.obj",
+         "sphere.obj": f"{ROOT}/scenes/models/sphere.obj"}
 
 
 def rays(rounds, mesh, options):
@@ -82,44 +75,25 @@ DECISIONS = (
 )
 
 
-def log(message):
-    print(message, file=sys.stderr, flush=True)
-
-
-def cpu_seconds(cmd):
-    """Runs cmd (output discarded); the user + system CPU seconds of the process."""
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    _, status, usage = os.wait4(proc.pid, 0)
-    if os.waitstatus_to_exitcode(status) != 0:
-        sys.exit(f"remeasure: {' '.join(cmd)} failed:\n{proc.stderr.read().decode()[-2000:]}")
-    return usage.ru_utime + usage.ru_stime
-
-
 class Remeasure:
     def __init__(self, args):
         self.new = os.path.abspath(os.path.join(args.build, "rayvec"))
         self.against_build = args.against_build
-        self.work = os.path.abspath(args.work)
-        os.makedirs(self.work, exist_ok=True)
-        info = subprocess.run([self.new, "info"], capture_output=True, text=True, check=True).stdout
-        self.has_avx512 = "avx512f=1 avx512dq=1" in info and "zmm=1" in info
-        self.has_embree = subprocess.run([self.new, "bench", "rays", "--help"], capture_output=True,
-                                         text=True).stdout.find("--vs-embree") >= 0 and self.embree_module()
-
-    def embree_module(self):
-        probe = subprocess.run([self.new, "bench", "rays", MESHES["sphere.obj"][0], "--vs-embree", "--size", "4x4",
-                                "--builds", "1", "--repeats", "1", "--threads", "1"], capture_output=True)
-        return probe.returncode == 0
+        self.inputs = targets.Targets(argparse.Namespace(build=args.build, work=args.work, rounds=0))
+        self.work = self.inputs.work
+        self.has_avx512 = self.inputs.has_avx512
+        self.has_embree = self.inputs.has_embree("remeasure's `rays` commands")
 
     def mesh(self, name):
-        path, maker = MESHES[name]
-        if maker is None:
-            return path
-        path = os.path.join(self.work, path)
-        if not os.path.exists(path):
-            log(f"remeasure: making {name}")
-            subprocess.run([sys.executable, f"{ROOT}/scripts/{maker[0]}"] + maker[1:], cwd=self.work, check=True)
-        return path
+        if name in FILES:
+            return FILES[name]
+        if name in ("sphere4k", "sphere1m"):
+            return self.inputs.sphere(name)
+        if name == "mod2":  # with its rays, mod2.csv
+            return self.inputs.make("mod2.obj", [sys.executable, f"{ROOT}/scripts/make_paper_scene.py", "mod2.obj",
+                                                 "mod2.csv"])
+        return self.inputs.make("sphere40k.obj", [sys.executable, f"{ROOT}/scripts/make_bumpy_sphere.py",
+                                                  "sphere40k.obj", "--rings", "100", "--segments", "200"])
 
     def vis(self):
         verts, faces = os.path.join(self.work, "sphere40k_verts.csv"), os.path.join(self.work, "sphere40k_faces.csv")
@@ -167,7 +141,7 @@ class Remeasure:
         times = {"old": [], "new": []}
         for r in range(rounds):
             for name, binary in ((("old", old), ("new", new)) if r % 2 == 0 else (("new", new), ("old", old))):
-                times[name].append(cpu_seconds([binary] + args))
+                times[name].append(targets.run([binary] + args)[2])
         rel = statistics.median(n / o for n, o in zip(times["new"], times["old"]))
         return (f"old {statistics.median(times['old']):.3f} s, new {statistics.median(times['new']):.3f} s CPU "
                 f"(medians of {rounds}); new / old per round, median {rel:.3f}")
