@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+
+#include <omp.h>
 
 #include "bvh/leaf_alignment.h"
 #include "geometry/triangle_mesh.h"
@@ -63,18 +66,42 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
     sah.max_leaf = std::min(uint32_t(steps) * sah.leaf_block, kMaxLeafTriangles);
   }
   const auto merge_slots = std::min(uint32_t(std::max(options.merge_steps, 0)) * step, kMaxLeafTriangles);
-  BuiltTree built = build_tree(mesh, sah, step, traversal_->width, merge_slots);
+  BuiltTree built;
   // Small meshes: a second tree whose SAH costs leaves in half steps (so it splits where halving a
   // leaf's triangles shrinks its box enough), kept when its whole-tree cost is the lower: long
   // triangles' boxes gain, compact meshes' do not (benchmarks.md#decision-leaf-block-choice).
   if (from_kernel && mesh.size() < kWideNodeTriangles) {
     SahConfig half = sah;
     half.leaf_block = step / 2;
-    BuiltTree other = build_tree(mesh, half, step, traversal_->width, merge_slots);
+    BuiltTree other;
+    // The two trees are independent: with two threads or more, one thread builds each, alone (a
+    // small mesh's build is too short for its own parallel parts to pay for their hand-overs;
+    // benchmarks.md#decision-build-chunk-sizes). Nested regions inside get one thread unless
+    // OMP_MAX_ACTIVE_LEVELS asks for more.
+    std::exception_ptr failed[2];  // an exception must not leave a section: rethrown after
+#pragma omp parallel sections num_threads(2) if (omp_get_max_threads() > 1)
+    {
+#pragma omp section
+      try {
+        built = build_tree(mesh, sah, step, traversal_->width, merge_slots);
+      } catch (...) {
+        failed[0] = std::current_exception();
+      }
+#pragma omp section
+      try {
+        other = build_tree(mesh, half, step, traversal_->width, merge_slots);
+      } catch (...) {
+        failed[1] = std::current_exception();
+      }
+    }
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
     if (other.wide.sah_cost(step) < built.wide.sah_cost(step)) {
       built = std::move(other);
       sah = half;
     }
+  } else {
+    built = build_tree(mesh, sah, step, traversal_->width, merge_slots);
   }
   leaf_block_ = sah.leaf_block;
   BinaryBvh& binary = built.binary;

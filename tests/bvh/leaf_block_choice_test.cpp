@@ -3,8 +3,10 @@
 // the two trees built explicitly, on meshes where each side wins, so a reversed or one-sided choice
 // fails; and sah_cost itself on a tree small enough to count by hand.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -75,6 +77,25 @@ TEST(BvhLeafBlock, SmallMeshesKeepTheTreeOfLowerSahCost) {
     std::string names;
     for (const std::string& s : skipped) names += " " + s;
     GTEST_SKIP() << "ISAs this CPU lacks, not tested:" << names;
+  }
+}
+
+// With two threads the two trees are built side by side, one on each thread: the kept tree must be
+// the one a single thread keeps, byte for byte.
+TEST(BvhLeafBlock, TwoThreadsKeepTheTreeOfOne) {
+  const Isa isa = isa_supported(Isa::avx512) ? Isa::avx512 : Isa::avx2;
+  if (!isa_supported(isa)) GTEST_SKIP() << "no AVX2 on this CPU";
+  const TraceConfig config{isa, Intersector::mt};
+  const int threads = omp_get_max_threads();
+  for (const TriangleMesh& mesh : {test::sphere(1.0f, 24, 48), test::sticks(3000, 11)}) {
+    omp_set_num_threads(1);
+    const BvhAccelerator one(mesh, config);
+    omp_set_num_threads(2);
+    const BvhAccelerator two(mesh, config);
+    omp_set_num_threads(threads);
+    EXPECT_EQ(one.leaf_block(), two.leaf_block());
+    ASSERT_EQ(one.tree().bytes(), two.tree().bytes());
+    EXPECT_EQ(0, std::memcmp(one.tree().arrays().nodes, two.tree().arrays().nodes, one.tree().bytes()));
   }
 }
 
