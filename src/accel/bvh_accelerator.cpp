@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 
 #include <omp.h>
 
 #include "bvh/leaf_alignment.h"
 #include "geometry/triangle_mesh.h"
+#include "platform/side_by_side.h"
 
 namespace rayvec {
 namespace {
@@ -76,26 +76,11 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
     BuiltTree other;
     // The two trees are independent: with two threads or more, one thread builds each, alone (a
     // small mesh's build is too short for its own parallel parts to pay for their hand-overs;
-    // benchmarks.md#decision-build-chunk-sizes). Nested regions inside get one thread unless
-    // OMP_MAX_ACTIVE_LEVELS asks for more.
-    std::exception_ptr failed[2];  // an exception must not leave a section: rethrown after
-#pragma omp parallel sections num_threads(2) if (omp_get_max_threads() > 1)
-    {
-#pragma omp section
-      try {
-        built = build_tree(mesh, sah, step, traversal_->width, merge_slots);
-      } catch (...) {
-        failed[0] = std::current_exception();
-      }
-#pragma omp section
-      try {
-        other = build_tree(mesh, half, step, traversal_->width, merge_slots);
-      } catch (...) {
-        failed[1] = std::current_exception();
-      }
-    }
-    for (const std::exception_ptr& e : failed)
-      if (e) std::rethrow_exception(e);
+    // benchmarks.md#decision-build-chunk-sizes).
+    side_by_side(
+        omp_get_max_threads() > 1,
+        [&] { built = build_tree(mesh, sah, step, traversal_->width, merge_slots); },
+        [&] { other = build_tree(mesh, half, step, traversal_->width, merge_slots); });
     if (other.wide.sah_cost(step) < built.wide.sah_cost(step)) {
       built = std::move(other);
       sah = half;

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "platform/side_by_side.h"
+
 namespace rayvec {
 namespace {
 
@@ -201,14 +203,16 @@ LargeBuffer collapse(const BinaryBvh& tree, CollapseRule rule, uint32_t merge_sl
     std::vector<WideNode<N>> other;
     // the two collapses are independent: one thread each for large trees (4.5 ms each on 1M
     // triangles, ~10 µs on 4k; the 256-node threshold is a round guess, not tuned)
-#pragma omp parallel sections if (tree.nodes.size() >= kParallelCollapseNodes)
-    {
-#pragma omp section
-      nodes = Collapser<N>(tree, CollapseRule::largest_area, spans, merge_slots).run(depth, leaves, sah_cost);
-#pragma omp section
-      other = Collapser<N>(tree, CollapseRule::most_triangles, spans, merge_slots)
-                  .run(depth_count, leaves_count, by_count);
-    }
+    side_by_side(
+        tree.nodes.size() >= kParallelCollapseNodes,
+        [&] {
+          nodes =
+              Collapser<N>(tree, CollapseRule::largest_area, spans, merge_slots).run(depth, leaves, sah_cost);
+        },
+        [&] {
+          other = Collapser<N>(tree, CollapseRule::most_triangles, spans, merge_slots)
+                      .run(depth_count, leaves_count, by_count);
+        });
     if (by_count < sah_cost) {
       nodes = std::move(other);
       depth = depth_count;
