@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <omp.h>
-
 #include "bvh/leaf_alignment.h"
 #include "geometry/triangle_mesh.h"
 #include "platform/side_by_side.h"
@@ -78,8 +76,7 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
     // small mesh's build is too short for its own parallel parts to pay for their hand-overs;
     // benchmarks.md#decision-build-chunk-sizes).
     side_by_side(
-        omp_get_max_threads() > 1,
-        [&] { built = build_tree(mesh, sah, step, traversal_->width, merge_slots); },
+        true, [&] { built = build_tree(mesh, sah, step, traversal_->width, merge_slots); },
         [&] { other = build_tree(mesh, half, step, traversal_->width, merge_slots); });
     if (other.wide.sah_cost(step) < built.wide.sah_cost(step)) {
       built = std::move(other);

@@ -42,6 +42,24 @@ TEST(SideBySide, ParallelJobsRunAtTheSameTimeOnTwoThreads) {
   EXPECT_NE(a_thread, b_thread);
 }
 
+// `--threads 1` must mean one thread: the limit wins over the request.
+TEST(SideBySide, OneThreadAllowedRunsTheJobsInTurnOnTheCallingThread) {
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  int order = 0, a_at = 0, b_at = 0, team = 0;
+  side_by_side(
+      true,
+      [&] {
+        a_at = ++order;
+        team = omp_get_num_threads();
+      },
+      [&] { b_at = ++order; });
+  omp_set_num_threads(threads);
+  EXPECT_EQ(team, 1);
+  EXPECT_EQ(a_at, 1);
+  EXPECT_EQ(b_at, 2);
+}
+
 TEST(SideBySide, SerialJobsRunOneAfterTheOtherOnTheCallingThread) {
   int order = 0, a_at = 0, b_at = 0;
   side_by_side(
