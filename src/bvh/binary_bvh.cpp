@@ -362,14 +362,16 @@ class Builder {
     const bool known = child_cbox != nullptr;
     const BBox lc = known ? child_cbox[0] : BBox{}, rc = known ? child_cbox[1] : BBox{};
     if (l.end - l.begin + r.end - r.begin >= config_.task_threshold) {
-      // both halves as tasks: a taskwait waits for every child of the current task, so a right
+      // Both halves as tasks: a taskwait waits for every child of the current task, so a right
       // half built in place would, at its first binning taskwait, also wait for (and usually run)
-      // the whole left half — which serialised the build
+      // the whole left half, which serialised the build. Nothing waits for them here: the node is
+      // written, and the parallel region's closing barrier waits for every task. A thread that
+      // waited here could run only its own children (libgomp's taskwait), so it sat idle while
+      // the other thread built a stolen half alone; at the barrier it runs any task.
 #pragma omp task firstprivate(left, l, depth, lc, known)
       build(left, l.begin, l.end, l.cap, l.box, depth + 1, known ? &lc : nullptr);
 #pragma omp task firstprivate(left, r, depth, rc, known)
       build(left + 1, r.begin, r.end, r.cap, r.box, depth + 1, known ? &rc : nullptr);
-#pragma omp taskwait
     } else {
       build(left, l.begin, l.end, l.cap, l.box, depth + 1, known ? &lc : nullptr);
       build(left + 1, r.begin, r.end, r.cap, r.box, depth + 1, known ? &rc : nullptr);
