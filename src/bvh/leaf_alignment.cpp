@@ -1,5 +1,7 @@
 #include "bvh/leaf_alignment.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <bit>
 #include <utility>
@@ -24,20 +26,73 @@ uint32_t leaf_padding(uint32_t offset, uint32_t count, uint32_t step) {
 
 constexpr uint32_t kMaxReorderStep = 64;  // a node's choices are one bit per entry offset
 
+constexpr unsigned kSubtreesPerThread = 8;  // the cut's subtrees differ in size: many even the load
+
 // What laying out a subtree costs, for every offset (mod step) at which its first slot could start:
 // the padding slots inside it and the offset after its last slot. A stack of them, `step` entries
 // each, flat (one pair of vectors for the whole walk, no copies of whole layouts).
 struct LayoutStack {
   std::vector<uint32_t> padding;
-  std::vector<uint8_t> exit;
+  std::vector<uint32_t> exit;
+  std::vector<uint32_t> joined_padding, joined_exit;  // join()'s result, before it replaces its inputs
+  uint32_t triangles = 0;                             // in the leaves push_leaf pushed
+
   void push_leaf(uint32_t count, uint32_t step) {
     for (uint32_t o = 0; o < step; ++o) {
       const uint32_t pad = leaf_padding(o, count, step);
       padding.push_back(pad);
-      exit.push_back(uint8_t((o + pad + count) & (step - 1)));
+      exit.push_back((o + pad + count) & (step - 1));
     }
+    triangles += count;
+  }
+  // Pushes the layout `k` of `from` (entries k·step onwards).
+  void push(const LayoutStack& from, std::size_t k, uint32_t step) {
+    const auto at = std::ptrdiff_t(k * step);
+    padding.insert(padding.end(), from.padding.begin() + at, from.padding.begin() + at + step);
+    exit.insert(exit.end(), from.exit.begin() + at, from.exit.begin() + at + step);
+  }
+  // Replaces the top two layouts (a node's first child, then its second) by the node's: at each
+  // entry offset the order of the two that needs less padding (the first child first on a tie, or
+  // always when !reorder). Returns the choices: bit o set where the second child goes first.
+  uint64_t join(uint32_t step, bool reorder) {
+    const std::size_t b = padding.size() - step, a = b - step;
+    joined_padding.resize(step);
+    joined_exit.resize(step);
+    uint64_t second_first = 0;
+    for (uint32_t o = 0; o < step; ++o) {
+      const uint32_t ab = padding[a + o] + padding[b + exit[a + o]];
+      const uint32_t ba = padding[b + o] + padding[a + exit[b + o]];
+      const bool swap = reorder && ba < ab;
+      if (swap) second_first |= uint64_t(1) << o;
+      joined_padding[o] = swap ? ba : ab;
+      joined_exit[o] = swap ? exit[a + exit[b + o]] : exit[b + exit[a + o]];
+    }
+    std::copy(joined_padding.begin(), joined_padding.end(), padding.begin() + std::ptrdiff_t(a));
+    std::copy(joined_exit.begin(), joined_exit.end(), exit.begin() + std::ptrdiff_t(a));
+    padding.resize(b);
+    exit.resize(b);
+    return second_first;
   }
 };
+
+// The roots of the subtrees the work is shared out by, in depth-first order (first child first):
+// the nodes `depth` levels below the root, and the leaves above that. Depth 0: the root alone.
+std::vector<uint32_t> subtree_roots(const BinaryBvh& tree, int depth) {
+  std::vector<uint32_t> roots;
+  std::vector<std::pair<uint32_t, int>> stack{{0, 0}};
+  while (!stack.empty()) {
+    const auto [k, d] = stack.back();
+    stack.pop_back();
+    const BinaryNode& n = tree.nodes[k];
+    if (n.leaf() || d == depth) {
+      roots.push_back(k);
+      continue;
+    }
+    stack.push_back({n.first + 1, d + 1});
+    stack.push_back({n.first, d + 1});
+  }
+  return roots;
+}
 
 // Which child of each inner binary node is laid out first, chosen per entry offset (bit o set: the
 // second child first when the node starts at offset o) so that the whole tree needs the fewest
@@ -45,77 +100,100 @@ struct LayoutStack {
 // of the wide BVH rely on; exact by dynamic programming over the offset, the only state one
 // subtree's layout passes to the next. Post-order without recursion (the tree may be deep); only
 // the layouts of the open path are alive.
-struct ChildOrder {
-  std::vector<uint64_t> second_first;  // per node, bit o: lay out the second child first at offset o
-  uint32_t padding = 0;                // padding slots of the whole tree laid out from offset 0
-};
-ChildOrder second_child_first(const BinaryBvh& tree, uint32_t step) {
-  std::vector<uint64_t> swap(tree.nodes.size(), 0);
-  std::vector<std::pair<uint32_t, bool>> stack{{0, false}};
-  LayoutStack done;  // layouts of finished subtrees whose parent is still open
-  uint32_t pad[kMaxReorderStep];
-  uint8_t out[kMaxReorderStep];
+//
+// Walks the subtree of `root`, writes the choices of its inner nodes into `swap` and pushes its
+// layout onto `out`. The subtrees rooted at `done` (in depth-first order; their layouts, in that
+// order, in `done_layouts`) are not entered.
+void choose_child_order(const BinaryBvh& tree, uint32_t root, uint32_t step,
+                        const std::vector<uint32_t>& done, const LayoutStack& done_layouts,
+                        std::vector<uint64_t>& swap, LayoutStack& out) {
+  const bool reorder = step <= kMaxReorderStep;
+  std::size_t next_done = 0;
+  std::vector<std::pair<uint32_t, bool>> stack{{root, false}};
   while (!stack.empty()) {
     const auto [k, children_done] = stack.back();
     stack.pop_back();
     const BinaryNode& n = tree.nodes[k];
-    if (n.leaf()) {
-      done.push_leaf(n.count, step);
-      continue;
-    }
-    if (!children_done) {
+    if (next_done < done.size() && done[next_done] == k) {
+      out.push(done_layouts, next_done++, step);
+    } else if (n.leaf()) {
+      out.push_leaf(n.count, step);
+    } else if (!children_done) {
       stack.push_back({k, true});
       stack.push_back({n.first + 1, false});
       stack.push_back({n.first, false});
-      continue;
+    } else {
+      swap[k] = out.join(step, reorder);
     }
-    const std::size_t b = done.padding.size() - step, a = b - step;  // second child, first child
-    const uint32_t* pa = &done.padding[a];
-    const uint32_t* pb = &done.padding[b];
-    const uint8_t* ea = &done.exit[a];
-    const uint8_t* eb = &done.exit[b];
-    for (uint32_t o = 0; o < step; ++o) {
-      const uint32_t ab = pa[o] + pb[ea[o]], ba = pb[o] + pa[eb[o]];
-      if (ba < ab) swap[k] |= uint64_t(1) << o;
-      pad[o] = ba < ab ? ba : ab;
-      out[o] = ba < ab ? ea[eb[o]] : eb[ea[o]];
-    }
-    std::copy(pad, pad + step, done.padding.begin() + std::ptrdiff_t(a));
-    std::copy(out, out + step, done.exit.begin() + std::ptrdiff_t(a));
-    done.padding.resize(b);
-    done.exit.resize(b);
   }
-  return {std::move(swap), done.padding[0]};  // the root's layout, from offset 0
 }
 
-}  // namespace
-
-void align_leaves(BinaryBvh& tree, uint32_t step) {
-  if (step <= 1 || tree.nodes.empty()) return;
-  const ChildOrder chosen = step <= kMaxReorderStep
-                                ? second_child_first(tree, step)
-                                : ChildOrder{std::vector<uint64_t>(tree.nodes.size(), 0), 0};
-  const std::vector<uint64_t>& swap = chosen.second_first;
-  std::vector<uint32_t> order;
-  order.reserve(tree.order.size() + chosen.padding);  // exact when the order was chosen
-  // depth first, each node's children in the chosen order
-  std::vector<uint32_t> stack{0};
+// Lays the subtree of `root` out from `out` onwards (`out - base`: its slot), each inner node's
+// children in the order chosen for the offset it starts at; sets its leaves' `first`, which index
+// `from` until then.
+void lay_out(BinaryBvh& tree, uint32_t root, uint32_t step, const std::vector<uint64_t>& swap,
+             const std::vector<uint32_t>& from, uint32_t* base, uint32_t* out) {
+  std::vector<uint32_t> stack{root};
   while (!stack.empty()) {
     const uint32_t k = stack.back();
     stack.pop_back();
     BinaryNode& n = tree.nodes[k];
-    const auto offset = uint32_t(order.size() & (step - 1));
+    const auto offset = uint32_t(std::size_t(out - base) & (step - 1));
     if (!n.leaf()) {
       const bool second_first = (swap[k] >> offset) & 1;
       stack.push_back(second_first ? n.first : n.first + 1);
       stack.push_back(second_first ? n.first + 1 : n.first);
       continue;
     }
-    order.insert(order.end(), leaf_padding(offset, n.count, step), TriangleSoA::kPaddingSlot);
-    const auto first = n.first;
-    n.first = uint32_t(order.size());
-    order.insert(order.end(), tree.order.begin() + first, tree.order.begin() + first + n.count);
+    out = std::fill_n(out, leaf_padding(offset, n.count, step), TriangleSoA::kPaddingSlot);
+    const uint32_t first = n.first;
+    n.first = uint32_t(out - base);
+    out = std::copy_n(from.begin() + first, n.count, out);
   }
+}
+
+}  // namespace
+
+// The threads share the work by subtrees a few levels below the root: a subtree's choices need
+// nothing from outside it, the levels above need only the subtrees' layouts, and once those levels
+// have chosen, the subtrees' first slots follow and each subtree lays itself out.
+void align_leaves(BinaryBvh& tree, uint32_t step) {
+  if (step <= 1 || tree.nodes.empty()) return;
+  const int threads = tree.nodes.size() >= kParallelAlignNodes ? omp_get_max_threads() : 1;
+  const int depth = threads > 1 ? std::bit_width(unsigned(threads) * kSubtreesPerThread - 1) : 0;
+  const std::vector<uint32_t> roots = subtree_roots(tree, depth);
+  std::vector<uint64_t> swap(tree.nodes.size(), 0);
+  std::vector<LayoutStack> subtrees(roots.size());
+#pragma omp parallel for schedule(dynamic, 1) if (roots.size() > 1)
+  for (std::size_t i = 0; i < roots.size(); ++i)
+    choose_child_order(tree, roots[i], step, {}, {}, swap, subtrees[i]);
+  LayoutStack layouts;  // the subtrees', one after another
+  for (std::size_t i = 0; i < roots.size(); ++i) layouts.push(subtrees[i], 0, step);
+  LayoutStack whole;
+  choose_child_order(tree, 0, step, roots, layouts, swap, whole);
+  // the subtrees' first slots: the levels above them, walked in the chosen order
+  std::vector<std::size_t> start(roots.size());
+  std::size_t slots = 0;
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const uint32_t k = stack.back();
+    stack.pop_back();
+    const auto offset = uint32_t(slots & (step - 1));
+    const auto i = std::size_t(std::find(roots.begin(), roots.end(), k) - roots.begin());
+    if (i < roots.size()) {
+      start[i] = slots;
+      slots += subtrees[i].triangles + layouts.padding[i * step + offset];
+      continue;
+    }
+    const BinaryNode& n = tree.nodes[k];
+    const bool second_first = (swap[k] >> offset) & 1;
+    stack.push_back(second_first ? n.first : n.first + 1);
+    stack.push_back(second_first ? n.first + 1 : n.first);
+  }
+  std::vector<uint32_t> order(slots);  // == tree.order.size() + whole.padding[0]
+#pragma omp parallel for schedule(dynamic, 1) if (roots.size() > 1)
+  for (std::size_t i = 0; i < roots.size(); ++i)
+    lay_out(tree, roots[i], step, swap, tree.order, order.data(), order.data() + start[i]);
   tree.order = std::move(order);
 }
 

@@ -7,16 +7,22 @@
 // Of the two children of each inner node, the one laid out first is the one that leaves the fewest
 // padding slots in the whole tree (benchmarks.md#decision-leaf-alignment).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "bvh/binary_bvh.h"
 
 namespace rayvec {
 
+// Trees of fewer nodes are aligned on the calling thread, larger ones by all the threads OpenMP
+// allows: sharing out a walk of a few hundred µs would cost more than it saves.
+constexpr std::size_t kParallelAlignNodes = std::size_t(1) << 14;
+
 // Rewrites tree.order (inserting kPaddingSlot entries) and every leaf's `first` so each leaf of
 // n triangles lies in ceil(n / step) aligned groups of `step` slots (a power of two; 1 leaves the
 // tree unchanged). Leaves keep their triangles, in their order; every subtree's leaves stay
-// contiguous (with padding between them), but two sibling subtrees may trade places.
+// contiguous (with padding between them), but two sibling subtrees may trade places. The result
+// does not depend on the number of threads.
 void align_leaves(BinaryBvh& tree, uint32_t step);
 
 }  // namespace rayvec

@@ -297,9 +297,14 @@ double tree_sah_cost(const BvhArrays& a, uint32_t step_slots) {
   return cost / double(root);
 }
 
+// Leaves' slot ranges are disjoint, so the nodes' leaves sort in parallel; in chunks of nodes, as a
+// node's leaves are mostly sorted already (a check of a few slots).
+constexpr uint32_t kSortChunkNodes = 256;
+
 template <int N>
 void sort_leaves(const BvhArrays& a, std::vector<uint32_t>& order) {
   const auto* nodes = static_cast<const WideNode<N>*>(a.nodes);
+#pragma omp parallel for schedule(dynamic, kSortChunkNodes) if (a.node_count > kSortChunkNodes)
   for (uint32_t n = 0; n < a.node_count; ++n)
     for (const uint32_t ref : nodes[n].ref) {
       if (ref == kEmptyRef || !(ref & kLeafFlag)) continue;

@@ -82,8 +82,14 @@ bool check_merged(const TriangleMesh& mesh, uint32_t step, uint32_t merge_slots)
   align_leaves(bin, step);
   const WideBvh plain(bin, N);
   const WideBvh merged(bin, N, CollapseRule::lower_sah_cost, merge_slots);
-  std::vector<uint32_t> order = bin.order;
+  std::vector<uint32_t> order = bin.order, one_thread = bin.order;  // leaves sort in parallel
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  sort_leaf_slots(merged, one_thread);
+  omp_set_num_threads(2);
   sort_leaf_slots(merged, order);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(order, one_thread) << N << "-wide";
   check_wide<N>(merged, mesh, bin, &order);
   EXPECT_LT(merged.node_count(), plain.node_count()) << N << "-wide";
   EXPECT_LT(merged.leaf_count(), plain.leaf_count()) << N << "-wide";

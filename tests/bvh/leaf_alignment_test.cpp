@@ -4,6 +4,7 @@
 // order, and only padding slots fill the gaps; the wide BVH built from the aligned tree still holds
 // every triangle exactly once, and the TriangleSoA turns padding entries into id −1 slots.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -103,7 +104,7 @@ std::size_t padding_with_swaps(const BinaryBvh& tree, uint32_t swapped, uint32_t
       slots += n.count;
       continue;
     }
-    const bool second_first = (swapped >> inner_rank[k]) & 1;
+    const bool second_first = inner_rank[k] < 32 && ((swapped >> inner_rank[k]) & 1);
     stack.push_back(second_first ? n.first : n.first + 1);
     stack.push_back(second_first ? n.first + 1 : n.first);
   }
@@ -162,6 +163,53 @@ TEST(LeafAlignment, PaddingIsTheLeastAnyOrderOfSiblingsGives) {
     }
   }
   EXPECT_GT(improved, 6);
+}
+
+// `tree` under a new root whose first child is a leaf of `count` new triangles (ids after the
+// tree's): a leaf just below the root, above the levels where the threads share the work out.
+BinaryBvh with_leaf_beside(const BinaryBvh& tree, uint32_t count) {
+  BinaryBvh out;
+  const auto slots = uint32_t(tree.order.size());
+  out.nodes.push_back(BinaryNode{BBox{}, 1, 0});
+  out.nodes.push_back(BinaryNode{BBox{}, slots, count});
+  for (BinaryNode n : tree.nodes) {  // every old node moves two places on
+    if (!n.leaf()) n.first += 2;
+    out.nodes.push_back(n);
+  }
+  out.order = tree.order;
+  for (uint32_t i = 0; i < count; ++i) out.order.push_back(slots + i);
+  return out;
+}
+
+// Large trees are aligned by several threads, each choosing and laying out its own subtrees: the
+// slots and every leaf's place are those of one thread, at steps that reorder siblings and at one
+// too large to (whose layouts need offsets past a byte), with a leaf above the shared-out levels.
+TEST(LeafAlignment, TwoThreadsLayOutTheSlotsOfOne) {
+  SahConfig small_leaves;
+  small_leaves.max_leaf = 6;
+  small_leaves.leaf_block = 1;
+  small_leaves.split_budget = 0;
+  const BinaryBvh built = build_binned_sah(test::random_soup(30000, 0.02f, 21), small_leaves);
+  const int threads = omp_get_max_threads();
+  for (const BinaryBvh& tree : {built, with_leaf_beside(built, 5)}) {
+    ASSERT_GE(tree.nodes.size(), kParallelAlignNodes) << "too small to share out";
+    for (uint32_t step : {4u, 16u, 512u}) {
+      BinaryBvh one = tree, two = tree;
+      omp_set_num_threads(1);
+      align_leaves(one, step);
+      omp_set_num_threads(2);
+      align_leaves(two, step);
+      omp_set_num_threads(threads);
+      EXPECT_EQ(one.order, two.order) << "step " << step;
+      EXPECT_EQ(two.order.capacity(), two.order.size());
+      EXPECT_EQ(leaf_contents(two), leaf_contents(tree)) << "step " << step;
+      for (std::size_t k = 0; k < tree.nodes.size(); ++k)
+        ASSERT_EQ(one.nodes[k].first, two.nodes[k].first) << "node " << k << ", step " << step;
+      if (step == 512) {
+        EXPECT_EQ(padding_slots(two), padding_with_swaps(tree, 0, step));  // tree order
+      }
+    }
+  }
 }
 
 TEST(LeafAlignment, PaddingSlotsBecomeZeroAreaSlotsWithoutId) {
