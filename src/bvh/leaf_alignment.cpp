@@ -75,6 +75,12 @@ struct LayoutStack {
   }
 };
 
+// Whether a node of these choices (LayoutStack::join) lays out its second child first at `offset`;
+// steps too wide to reorder have offsets past the choices' bits and keep the tree's order.
+bool second_child_first(uint64_t choices, uint32_t offset) {
+  return offset < kMaxReorderStep && ((choices >> offset) & 1) != 0;
+}
+
 // The roots of the subtrees the work is shared out by, in depth-first order (first child first):
 // the nodes `depth` levels below the root, and the leaves above that. Depth 0: the root alone.
 std::vector<uint32_t> subtree_roots(const BinaryBvh& tree, int depth) {
@@ -140,7 +146,7 @@ void lay_out(BinaryBvh& tree, uint32_t root, uint32_t step, const std::vector<ui
     BinaryNode& n = tree.nodes[k];
     const auto offset = uint32_t(std::size_t(out - base) & (step - 1));
     if (!n.leaf()) {
-      const bool second_first = (swap[k] >> offset) & 1;
+      const bool second_first = second_child_first(swap[k], offset);
       stack.push_back(second_first ? n.first : n.first + 1);
       stack.push_back(second_first ? n.first + 1 : n.first);
       continue;
@@ -186,7 +192,7 @@ void align_leaves(BinaryBvh& tree, uint32_t step) {
       continue;
     }
     const BinaryNode& n = tree.nodes[k];
-    const bool second_first = (swap[k] >> offset) & 1;
+    const bool second_first = second_child_first(swap[k], offset);
     stack.push_back(second_first ? n.first : n.first + 1);
     stack.push_back(second_first ? n.first + 1 : n.first);
   }
