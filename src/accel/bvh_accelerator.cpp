@@ -6,6 +6,7 @@
 #include "bvh/leaf_alignment.h"
 #include "geometry/triangle_mesh.h"
 #include "platform/side_by_side.h"
+#include "platform/stopwatch.h"
 
 namespace rayvec {
 namespace {
@@ -28,13 +29,20 @@ LeafCall leaf_call(const TraceConfig& config, const BvhOptions& options, std::si
 struct BuiltTree {
   BinaryBvh binary;
   WideBvh wide;
+  BvhBuildTimes times;  // tree, align and collapse
 };
 
 BuiltTree build_tree(const TriangleMesh& mesh, const SahConfig& sah, uint32_t step_slots, int width,
                      uint32_t merge_slots) {
-  BuiltTree t{build_binned_sah(mesh, sah), {}};
+  auto t0 = std::chrono::steady_clock::now();
+  BuiltTree t{build_binned_sah(mesh, sah), {}, {}};
+  t.times.tree = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
   align_leaves(t.binary, step_slots);
+  t.times.align = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
   t.wide = WideBvh(t.binary, width, CollapseRule::lower_sah_cost, merge_slots);
+  t.times.collapse = seconds_since(t0);
   return t;
 }
 
@@ -88,13 +96,18 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
   leaf_block_ = sah.leaf_block;
   BinaryBvh& binary = built.binary;
   tree_ = std::move(built.wide);
+  build_times_ = built.times;
+  auto t0 = std::chrono::steady_clock::now();
   sort_leaf_slots(tree_, binary.order);
+  build_times_.sort = seconds_since(t0);
   tree_.set_box_epsilon(options.box_epsilon);
   tree_.set_packet_slot_cull(options.packet_slot_cull < 0 ? mesh.size() < kPacketSlotCullBelow
                                                           : options.packet_slot_cull != 0);
+  t0 = std::chrono::steady_clock::now();
   tris_ = TriangleSoA(mesh, binary.order,
                       bvh_normals(config.intersector, options.stored_normals, tree_.bytes(),
                                   binary.order.size(), mesh.size()));
+  build_times_.fill = seconds_since(t0);
 }
 
 bool packet_aligned(const Ray* rays, std::size_t n) {

@@ -67,6 +67,17 @@ bool packet_aligned(const Ray* rays, std::size_t n);
 // packet_aligned, and every ray has rays[0]'s origin.
 bool packet_coherent(const Ray* rays, std::size_t n);
 
+// Wall-clock seconds of a BvhAccelerator's build, stage by stage. Below kWideNodeTriangles two trees
+// are built side by side and one is kept: `tree`, `align` and `collapse` are the kept one's, so the
+// stages may add up to less than the whole build.
+struct BvhBuildTimes {
+  double tree = 0;      // the binned SAH build (build_binned_sah)
+  double align = 0;     // align_leaves
+  double collapse = 0;  // the wide tree (WideBvh)
+  double sort = 0;      // sort_leaf_slots
+  double fill = 0;      // the TriangleSoA
+};
+
 class BvhAccelerator final : public Accelerator {
  public:
   // Builds with omp_get_max_threads() threads. Throws std::length_error for 2^26 or more triangles.
@@ -100,6 +111,7 @@ class BvhAccelerator final : public Accelerator {
   // The SAH's leaf block the tree was built with (SahConfig::leaf_block): the kernel's width, or on
   // small meshes half of it where that tree's cost is the lower.
   uint32_t leaf_block() const { return leaf_block_; }
+  const BvhBuildTimes& build_times() const { return build_times_; }
 
  private:
   TraceConfig config_;
@@ -108,6 +120,7 @@ class BvhAccelerator final : public Accelerator {
   const TriangleKernels* kernels_;
   const BvhTraversal* traversal_;
   uint32_t leaf_block_ = 0;
+  BvhBuildTimes build_times_;
 };
 
 }  // namespace rayvec

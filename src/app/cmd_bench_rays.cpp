@@ -3,8 +3,10 @@
 // Embree 3 in the same run. The ray sets are defined in src/bench/ray_sets.h, the timing in rays_bench.h.
 #include <omp.h>
 
+#include <array>
 #include <chrono>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,6 +50,22 @@ std::string json_array(const std::vector<double>& v) {
     s += buf;
   }
   return s + "]";
+}
+
+// BvhBuildTimes' stages, in the order bench rays prints them.
+constexpr const char* kBuildStages[] = {"tree", "align", "collapse", "sort", "fill"};
+using StageRuns = std::array<std::vector<double>, std::size(kBuildStages)>;
+
+// Each stage's median: a JSON object, or "tree 0.0123, align …" for the text report.
+std::string stage_medians(const StageRuns& runs, bool json) {
+  std::string s = json ? "{" : "";
+  char buf[64];
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    std::snprintf(buf, sizeof buf, json ? "%s\"%s\":%.6f" : "%s%s %.4f", k ? (json ? "," : ", ") : "",
+                  kBuildStages[k], median(runs[k]));
+    s += buf;
+  }
+  return json ? s + "}" : s;
 }
 
 void parse_size(const std::string& s, int& w, int& h) {
@@ -171,12 +189,16 @@ int run(const Options& o) {
   // the rival gets the same ISA: Embree's widest at most rayvec's (it has no scalar code: SSE2)
   const char* embree_isa = config.isa == Isa::avx512 ? "avx512" : (config.isa == Isa::avx2 ? "avx2" : "sse2");
   std::vector<double> build_runs, embree_build_runs;
+  StageRuns stage_runs;
   for (int b = 0; b < o.builds; ++b) {
     progress("building the BVH (" + std::to_string(b + 1) + " of " + std::to_string(o.builds) + ")");
     bvh.reset();
     const auto t0 = std::chrono::steady_clock::now();
     bvh = std::make_unique<BvhAccelerator>(mesh, config, bvh_options);
     build_runs.push_back(seconds_since(t0));
+    const BvhBuildTimes& t = bvh->build_times();
+    for (auto [stage, s] : {std::pair{0, t.tree}, {1, t.align}, {2, t.collapse}, {3, t.sort}, {4, t.fill}})
+      stage_runs[std::size_t(stage)].push_back(s);
   }
   for (int b = 0; o.vs_embree && b < o.builds; ++b) {
     progress("building Embree's BVH (" + std::to_string(b + 1) + " of " + std::to_string(o.builds) + ")");
@@ -214,7 +236,7 @@ int run(const Options& o) {
         "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
         "\"leaf_call\":\"%s\",\"leaf_block\":%u,\"merge_steps\":%d,\"split_budget\":%.3f,"
         "\"references_per_tri\":%.4f,\"stored_normals\":%s,\"packet_slot_cull\":%s,"
-        "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,"
+        "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,\"build_stages_s\":%s,"
         "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
         json_string(o.model).c_str(), mesh.size(), width, height, json_string(cpu_features().brand).c_str(),
         json_string(isa_name(config.isa)).c_str(), json_string(intersector_name(config.intersector)).c_str(),
@@ -223,7 +245,8 @@ int run(const Options& o) {
         leaf_call_name(bvh->traversal().leaf_call), bvh->leaf_block(), o.merge_steps, double(split_budget),
         refs_per_tri, bvh->triangles().stores_normals() ? "true" : "false",
         bvh->tree().arrays().packet_slot_cull ? "true" : "false", o.builds, build_s,
-        json_array(build_runs).c_str(), bytes_per_tri, fma.avx2, fma.avx512);
+        json_array(build_runs).c_str(), stage_medians(stage_runs, true).c_str(), bytes_per_tri, fma.avx2,
+        fma.avx512);
     print_sets_json(run);
     if (o.vs_embree) {
       std::printf(",\"embree\":{\"build_s\":%.6f,\"build_runs_s\":%s,\"max_isa\":\"%s\",", embree_build_s,
@@ -255,13 +278,13 @@ int run(const Options& o) {
       "bvh: %d-wide, %u nodes, %u leaves (SAH leaf block %u, merged up to %d kernel steps), "
       "%.3f references per triangle (spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, "
       "packet slot cull %s; "
-      "build %.4f s; %.1f bytes/triangle (nodes %.1f + triangles %.1f)\n",
+      "build %.4f s (%s); %.1f bytes/triangle (nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), bvh->leaf_block(),
       o.merge_steps, refs_per_tri, double(split_budget), bvh->tree().depth(),
       leaf_call_name(bvh->traversal().leaf_call),
       bvh->triangles().stores_normals() ? "stored" : "formed per step",
-      bvh->tree().arrays().packet_slot_cull ? "on" : "off", build_s, bytes_per_tri,
-      double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
+      bvh->tree().arrays().packet_slot_cull ? "on" : "off", build_s, stage_medians(stage_runs, false).c_str(),
+      bytes_per_tri, double(bvh->tree().bytes()) / tris, double(bvh->triangles().bytes()) / tris);
   if (o.vs_embree)
     std::printf(
         "embree: max_isa=%s, RTC_BUILD_QUALITY_HIGH build %.4f s (rayvec/embree build time "

@@ -111,6 +111,29 @@ TEST(BenchRays, BuildsReportsEveryBuildAndTheirMedian) {
   EXPECT_EQ(test::run_cli("bench rays " + obj + " --size 4x4 --builds 0").status, 2);
 }
 
+// build_stages_s: the median wall time of each stage of the build (BvhBuildTimes), which within one
+// build add up to no more than the whole; the text report lists them after the build's time.
+TEST(BenchRays, BuildStagesAddUpToNoMoreThanTheBuild) {
+  const std::string obj = write_octahedron(test::temp_dir("bench_rays_stages"));
+  const auto r = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --json --builds 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double build = number_after(r.out, "\"build_s\":").first;
+  double sum = 0;
+  for (const char* stage : {"tree", "align", "collapse", "sort", "fill"}) {
+    const auto [seconds, end] =
+        number_after(r.out, std::string("\"") + stage + "\":", r.out.find("\"build_stages_s\":{"));
+    ASSERT_NE(end, std::string::npos) << stage << ": " << r.out;
+    EXPECT_GE(seconds, 0.0) << stage;
+    sum += seconds;
+  }
+  EXPECT_GT(number_after(r.out, "\"tree\":").first, 0.0) << r.out;
+  EXPECT_LE(sum, build) << r.out;
+  const auto text = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --builds 1");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find(" s (tree "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(", fill "), std::string::npos) << text.out;
+}
+
 // Off a terminal, every stage is one line on stderr; stdout keeps only the JSON object.
 TEST(BenchRays, ProgressGoesToStderrOneLineAStage) {
   const std::string obj = write_octahedron(test::temp_dir("bench_rays_progress"));
