@@ -15,6 +15,14 @@ namespace {
 
 constexpr std::int64_t kParallelFill = 2048;  // fewer slots: fill on the calling thread
 
+// The fill reads the mesh in the tree's slot order: neighbouring slots lie near in space but
+// anywhere in the mesh's arrays, so a slot's index row and vertices would be cache misses that
+// the hardware prefetchers cannot foresee. They are fetched this many slots ahead: the index row
+// first, then, once it has arrived, the vertices it names (benchmarks.md#decision-soa-fill-prefetch).
+// Smaller meshes' arrays stay in the caches, where the prefetches only cost.
+constexpr std::int64_t kIndexAhead = 64, kVertexAhead = 32;
+constexpr std::size_t kPrefetchFrom = std::size_t(1) << 15;  // triangles
+
 }  // namespace
 
 TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> order, Normals normals) {
@@ -40,10 +48,21 @@ TriangleSoA::TriangleSoA(const TriangleMesh& mesh, std::span<const uint32_t> ord
 
   // every slot written once: triangles below count_, zero-area padding (id −1) above
   const std::int64_t slots = padded_, count = count_;
+  const bool fetch_ahead = !order.empty() && mesh.size() >= kPrefetchFrom;
   float bound = 0.0f;
 #pragma omp parallel for schedule(static) reduction(max : bound) if (slots >= kParallelFill)
   for (std::int64_t i = 0; i < slots; ++i) {
     float* const slot = base + slot_offset(uint32_t(i));
+    // written in the loop: g++ dropped the calls of a helper whose only effects were prefetches
+    if (fetch_ahead && i + kIndexAhead < count) {
+      const uint32_t ahead = order[std::size_t(i + kIndexAhead)];
+      if (ahead != kPaddingSlot) __builtin_prefetch(&mesh.triangles[ahead]);
+    }
+    if (fetch_ahead && i + kVertexAhead < count) {
+      const uint32_t ahead = order[std::size_t(i + kVertexAhead)];
+      if (ahead != kPaddingSlot)
+        for (const uint32_t v : mesh.triangles[ahead]) __builtin_prefetch(&mesh.positions[v]);
+    }
     const uint32_t tri = i < count && !order.empty() ? order[std::size_t(i)] : uint32_t(i);
     int32_t& id = ids[slot_offset(uint32_t(i))];
     if (i >= count || tri == kPaddingSlot) {

@@ -157,7 +157,8 @@ TEST(BinnedSahBuilder, SameTreeWhenTheTopLevelsPartitionInParallel) {
 }
 
 TEST(TriangleSoA, ParallelFillWritesEverySlotInOrder) {
-  const TriangleMesh mesh = test::random_soup(20000, 0.05f, 14);  // above the parallel threshold
+  // above the parallel threshold, and large enough that the fill fetches the mesh ahead
+  const TriangleMesh mesh = test::random_soup(40000, 0.05f, 14);
   std::vector<uint32_t> order(mesh.size());
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = uint32_t(order.size()) - 1 - i;
   const int threads = omp_get_max_threads();
