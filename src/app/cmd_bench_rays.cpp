@@ -56,13 +56,16 @@ std::string json_array(const std::vector<double>& v) {
 constexpr const char* kBuildStages[] = {"tree", "align", "collapse", "sort", "fill"};
 using StageRuns = std::array<std::vector<double>, std::size(kBuildStages)>;
 
-// Each stage's median: a JSON object, or "tree 0.0123, align …" for the text report.
+// Each stage's median: a JSON object in seconds, or "ms: tree 12.34, align …" for the text report.
 std::string stage_medians(const StageRuns& runs, bool json) {
-  std::string s = json ? "{" : "";
+  std::string s = json ? "{" : "ms: ";
   char buf[64];
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    std::snprintf(buf, sizeof buf, json ? "%s\"%s\":%.6f" : "%s%s %.4f", k ? (json ? "," : ", ") : "",
-                  kBuildStages[k], median(runs[k]));
+    if (json) {
+      std::snprintf(buf, sizeof buf, "%s\"%s\":%.6f", k ? "," : "", kBuildStages[k], median(runs[k]));
+    } else {
+      std::snprintf(buf, sizeof buf, "%s%s %.2f", k ? ", " : "", kBuildStages[k], median(runs[k]) * 1e3);
+    }
     s += buf;
   }
   return json ? s + "}" : s;
@@ -197,8 +200,8 @@ int run(const Options& o) {
     bvh = std::make_unique<BvhAccelerator>(mesh, config, bvh_options);
     build_runs.push_back(seconds_since(t0));
     const BvhBuildTimes& t = bvh->build_times();
-    for (auto [stage, s] : {std::pair{0, t.tree}, {1, t.align}, {2, t.collapse}, {3, t.sort}, {4, t.fill}})
-      stage_runs[std::size_t(stage)].push_back(s);
+    const double stages[] = {t.tree, t.align, t.collapse, t.sort, t.fill};  // kBuildStages' order
+    for (std::size_t k = 0; k < stage_runs.size(); ++k) stage_runs[k].push_back(stages[k]);
   }
   for (int b = 0; o.vs_embree && b < o.builds; ++b) {
     progress("building Embree's BVH (" + std::to_string(b + 1) + " of " + std::to_string(o.builds) + ")");

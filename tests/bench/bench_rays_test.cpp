@@ -130,7 +130,7 @@ TEST(BenchRays, BuildStagesAddUpToNoMoreThanTheBuild) {
   EXPECT_LE(sum, build) << r.out;
   const auto text = test::run_cli("bench rays " + obj + " --size 8x8 --repeats 1 --builds 1");
   ASSERT_EQ(text.status, 0) << text.err;
-  EXPECT_NE(text.out.find(" s (tree "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(" s (ms: tree "), std::string::npos) << text.out;
   EXPECT_NE(text.out.find(", fill "), std::string::npos) << text.out;
 }
 
