@@ -45,11 +45,10 @@ struct LayoutStack {
     }
     triangles += count;
   }
-  // Pushes the layout `k` of `from` (entries k·step onwards).
-  void push(const LayoutStack& from, std::size_t k, uint32_t step) {
-    const auto at = std::ptrdiff_t(k * step);
-    padding.insert(padding.end(), from.padding.begin() + at, from.padding.begin() + at + step);
-    exit.insert(exit.end(), from.exit.begin() + at, from.exit.begin() + at + step);
+  // Pushes the layout `from` holds (a finished subtree's: `step` entries).
+  void push(const LayoutStack& from) {
+    padding.insert(padding.end(), from.padding.begin(), from.padding.end());
+    exit.insert(exit.end(), from.exit.begin(), from.exit.end());
   }
   // Replaces the top two layouts (a node's first child, then its second) by the node's: at each
   // entry offset the order of the two that needs less padding (the first child first on a tie, or
@@ -108,10 +107,10 @@ std::vector<uint32_t> subtree_roots(const BinaryBvh& tree, int depth) {
 // the layouts of the open path are alive.
 //
 // Walks the subtree of `root`, writes the choices of its inner nodes into `swap` and pushes its
-// layout onto `out`. The subtrees rooted at `done` (in depth-first order; their layouts, in that
-// order, in `done_layouts`) are not entered.
+// layout onto `out`. The subtrees rooted at `done` (in depth-first order, their layouts in
+// `done_layouts`) are not entered.
 void choose_child_order(const BinaryBvh& tree, uint32_t root, uint32_t step,
-                        const std::vector<uint32_t>& done, const LayoutStack& done_layouts,
+                        const std::vector<uint32_t>& done, const std::vector<LayoutStack>& done_layouts,
                         std::vector<uint64_t>& swap, LayoutStack& out) {
   const bool reorder = step <= kMaxReorderStep;
   std::size_t next_done = 0;
@@ -121,7 +120,7 @@ void choose_child_order(const BinaryBvh& tree, uint32_t root, uint32_t step,
     stack.pop_back();
     const BinaryNode& n = tree.nodes[k];
     if (next_done < done.size() && done[next_done] == k) {
-      out.push(done_layouts, next_done++, step);
+      out.push(done_layouts[next_done++]);
     } else if (n.leaf()) {
       out.push_leaf(n.count, step);
     } else if (!children_done) {
@@ -173,10 +172,8 @@ void align_leaves(BinaryBvh& tree, uint32_t step) {
 #pragma omp parallel for schedule(dynamic, 1) if (roots.size() > 1)
   for (std::size_t i = 0; i < roots.size(); ++i)
     choose_child_order(tree, roots[i], step, {}, {}, swap, subtrees[i]);
-  LayoutStack layouts;  // the subtrees', one after another
-  for (std::size_t i = 0; i < roots.size(); ++i) layouts.push(subtrees[i], 0, step);
   LayoutStack whole;
-  choose_child_order(tree, 0, step, roots, layouts, swap, whole);
+  choose_child_order(tree, 0, step, roots, subtrees, swap, whole);
   // the subtrees' first slots: the levels above them, walked in the chosen order
   std::vector<std::size_t> start(roots.size());
   std::size_t slots = 0;
@@ -188,7 +185,7 @@ void align_leaves(BinaryBvh& tree, uint32_t step) {
     const auto i = std::size_t(std::find(roots.begin(), roots.end(), k) - roots.begin());
     if (i < roots.size()) {
       start[i] = slots;
-      slots += subtrees[i].triangles + layouts.padding[i * step + offset];
+      slots += subtrees[i].triangles + subtrees[i].padding[offset];
       continue;
     }
     const BinaryNode& n = tree.nodes[k];
