@@ -304,8 +304,10 @@ RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, 
       auto boxes = PK::template Forward<true>::load(rows, neg, bvh.box_epsilon);
       const pfloat d[3] = {pfloat::load(s.soa[3]), pfloat::load(s.soa[4]), pfloat::load(s.soa[5])};
       // the hull built in place: a copy of its scalars, read back as vectors before their stores
-      // have left, stalls
-      PacketChildren<B, true> children{boxes.hull(active), boxes.max_tmax(active),
+      // have left, stalls (a braced list is evaluated in order: tmax is set before it is read)
+      const pfloat r[3] = {pfloat::load(s.rd[0]), pfloat::load(s.rd[1]), pfloat::load(s.rd[2])};
+      float tmax;
+      PacketChildren<B, true> children{boxes.hull(r, active, &tmax), tmax,
                                        slot_cull(bvh.packet_slot_cull, hmax_lanes(m, active), d, active)};
       traverse(boxes, children);
     } else {

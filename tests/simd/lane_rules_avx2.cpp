@@ -1,5 +1,5 @@
-// lane_rules.h for avx2: next_up over VPair<vfloat> (the 16-lane packets' type, each half
-// vfloat's next_up) and mt_lower over vfloat, compiled with AVX2's flags.
+// lane_rules.h for avx2: next_up and the packet hull over VPair<vfloat> (the 16-lane packets'
+// type, each half vfloat's) and mt_lower over vfloat, compiled with AVX2's flags.
 #include <cstdint>
 
 #include "kernels/triangle_kernels.h"
@@ -12,11 +12,11 @@ namespace rayvec::avx2 {
 #include "kernels/moller_trumbore.inl"
 #include "kernels/mt_float.inl"
 
-using NextUpLanes = VPair<vfloat>;
+using PacketFloat = VPair<vfloat>;
 #include "lane_rules.inl"
 
 }  // namespace rayvec::avx2
 
 rayvec::test::LaneRules rayvec::test::lane_rules_avx2() {
-  return {&avx2::next_up_lanes, &avx2::mt_lower_lanes};
+  return {&avx2::next_up_lanes, &avx2::mt_lower_lanes, &avx2::packet_hull_lanes};
 }

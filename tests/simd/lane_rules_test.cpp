@@ -7,6 +7,7 @@
 // vector lanes; ISAs the CPU lacks are skipped and named.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -70,6 +71,50 @@ TEST_P(LaneRules, MtLowerNarrowsPositiveTminKeepsZeroAndDropsTheRest) {
     const float x = in[i];
     const float want = x > 0.0f ? x * kNarrow : x == 0.0f ? 0.0f : -kInf;
     expect_same_bits(want, out[i], x, "mt_lower", GetParam());
+  }
+}
+
+// A uniform forward packet's hull (PacketForward::hull, bvh/simd/packet_lanes.inl) bounds the lanes
+// asked for with their own extremes, bit for bit: a hull narrower than a lane drops children that
+// lane enters, a wider one tests more than it must. Its nr and fr bounds are 1/d's extremes times
+// 1 ∓ eps, equal to the extremes of the lanes' own products only because rounding a product with a
+// positive constant is monotonic; the directions run from subnormal reciprocals to 2^60, both signs.
+TEST_P(LaneRules, PacketHullIsTheExtremesOfItsLanes) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<unsigned> masks = {0xffffu, 1u, 0x8000u, 0x0ff0u, 0x5555u};
+  for (int i = 0; i < 20; ++i) masks.push_back((unsigned(rng()) & 0xffffu) | 1u << (rng() % 16));
+  for (int trial = 0; trial < 200; ++trial) {
+    alignas(64) float soa[8][16];
+    for (int a = 0; a < 3; ++a) {
+      const float sign = rng() % 2 ? -1.0f : 1.0f;
+      for (int k = 0; k < 16; ++k) {
+        soa[a][k] = (unit(rng) - 0.5f) * std::ldexp(1.0f, int(rng() % 40) - 20);
+        // 1/d from 2^-127 (subnormal) to 2^60, in the axis' one sign
+        soa[3 + a][k] = sign * (1.0f + unit(rng)) * std::ldexp(1.0f, int(rng() % 188) - 127);
+      }
+    }
+    for (int k = 0; k < 16; ++k) {
+      soa[6][k] = rng() % 3 ? 0.0f : unit(rng);
+      soa[7][k] = rng() % 4 ? 1.0f + 100.0f * unit(rng) : kInf;
+    }
+    const float eps = trial % 2 ? 0x1p-18f : 0x1p-20f;
+    for (unsigned lanes : masks) {
+      test::PacketHullLanes got;
+      rules().packet_hull(&soa[0][0], lanes, eps, &got);
+      // the lanes' extremes: lowest for nr_lo, fr_lo, kf_lo and tmin, highest for the others
+      const int row[20] = {0, 1, 2, 0, 1, 2, 3, 4, 5, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13};
+      const bool lowest[20] = {1, 1, 1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 0};
+      for (int j = 0; j < 20; ++j) {
+        float want = lowest[j] ? kInf : -kInf;
+        for (int k = 0; k < 16; ++k)
+          if (lanes >> k & 1u)
+            want = lowest[j] ? std::min(want, got.lanes[row[j]][k]) : std::max(want, got.lanes[row[j]][k]);
+        EXPECT_EQ(std::bit_cast<uint32_t>(want), std::bit_cast<uint32_t>(got.hull[j]))
+            << "hull bound " << j << ", lanes " << std::hex << lanes << ", " << isa_name(GetParam()) << ": "
+            << want << " wanted, " << got.hull[j] << " got";
+      }
+    }
   }
 }
 
