@@ -155,7 +155,7 @@ unsigned bvh_occluded_packet(const BvhArrays& bvh, const TriangleArrays& tris, c
   if (leaf == PacketAnyLeaf::watertight) {
     const float* const o[3] = {s.soa[0], s.soa[1], s.soa[2]};
     const float* const d[3] = {s.soa[3], s.soa[4], s.soa[5]};
-    wq = watertight_packet_rays<pfloat>(o, d, s.soa[6], active);
+    set_watertight_packet_rays<pfloat>(wq, o, d, s.soa[6], active);
   }
   const PacketAnyRun run{leaf, q, wq, limit, filters};
   unsigned occluded = 0;

@@ -378,7 +378,7 @@ void bvh_closest_packet(const BvhArrays& bvh, const TriangleArrays& tris, const 
   if (leaf == PacketLeaf::watertight) {
     const float* const o[3] = {s.soa[0], s.soa[1], s.soa[2]};
     const float* const d[3] = {s.soa[3], s.soa[4], s.soa[5]};
-    wq = watertight_packet_rays<pfloat>(o, d, s.soa[6], active);
+    set_watertight_packet_rays<pfloat>(wq, o, d, s.soa[6], active);
   }
   const PacketRun run{tmax, initial, leaf, q, wq};
   with_packet_boxes<B, PK>(

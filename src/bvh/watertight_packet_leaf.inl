@@ -9,7 +9,7 @@
 // both run the one body watertight_lanes: the single-ray kernel with the ray broadcast and W
 // triangles loaded, this kernel with the rays as lanes and one triangle broadcast. Each lane has the
 // permutation (kx, ky, kz) of its own ray: the per-lane origin and shear are formed once per packet
-// (watertight_packet_rays: the same correctly rounded divisions as watertight_ray), and a leaf is
+// (set_watertight_packet_rays: the same correctly rounded divisions as watertight_ray), and a leaf is
 // stepped once for each permutation its lanes use, reading that permutation's vertex rows — a
 // camera packet's rays share their dominant axis and sign, so nearly always once. Within a lane,
 // slots are visited in increasing order with a strict `<` against the lane's nearest t, so of equal
@@ -39,11 +39,12 @@ RAYVEC_INLINE V pick_axis(typename V::Mask on_x, typename V::Mask on_y, V x, V y
   return select(on_y, select(on_x, z, x), y);
 }
 
-// From the packet's SoA rows (o[3], d[3] and tmin of P rays); only the lanes of `active` (finite
-// rays) are used later.
+// Sets q from the packet's SoA rows (o[3], d[3] and tmin of P rays); only the lanes of `active`
+// (finite rays) are used later. Filled in place: a returned copy moves the scalar lane masks with
+// vector loads that wait on their just-made stores (store forwarding fails).
 template <class V>
-RAYVEC_INLINE WatertightPacketRays<V> watertight_packet_rays(const float* const o[3], const float* const d[3],
-                                                             const float* tmin, unsigned active) {
+RAYVEC_INLINE void set_watertight_packet_rays(WatertightPacketRays<V>& q, const float* const o[3],
+                                              const float* const d[3], const float* tmin, unsigned active) {
   const V o0 = V::load(o[0]), o1 = V::load(o[1]), o2 = V::load(o[2]);
   const V d0 = V::load(d[0]), d1 = V::load(d[1]), d2 = V::load(d[2]);
   const V a0 = abs(d0), a1 = abs(d1), a2 = abs(d2);
@@ -56,7 +57,6 @@ RAYVEC_INLINE WatertightPacketRays<V> watertight_packet_rays(const float* const 
   const typename V::Mask swap = dz < V::broadcast(0.0f);
   const V ox = pick_axis<V>(on0, on1, o1, o2, o0), oy = pick_axis<V>(on0, on1, o2, o0, o1);
   const V dx = pick_axis<V>(on0, on1, d1, d2, d0), dy = pick_axis<V>(on0, on1, d2, d0, d1);
-  WatertightPacketRays<V> q;
   q.ox = select(swap, ox, oy);
   q.oy = select(swap, oy, ox);
   q.oz = pick_axis<V>(on0, on1, o0, o1, o2);
@@ -70,7 +70,6 @@ RAYVEC_INLINE WatertightPacketRays<V> watertight_packet_rays(const float* const 
     q.lanes[2 * kz] = by_axis[kz] & ~neg;
     q.lanes[2 * kz + 1] = by_axis[kz] & neg;
   }
-  return q;
 }
 
 // The ray lanes of `q` with the vertex rows of permutation c.
