@@ -290,14 +290,14 @@ RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, 
   pfloat m =
       vmax(vmax(abs(pfloat::load(s.soa[0])), abs(pfloat::load(s.soa[1]))), abs(pfloat::load(s.soa[2])));
   for (int a = 0; a < 3; ++a) m = vmax(m, pfloat::broadcast(vmax_abs(bvh.root_lo[a], bvh.root_hi[a])));
-  const pfloat r =
-      vmax(vmax(abs(pfloat::load(s.rd[0])), abs(pfloat::load(s.rd[1]))), abs(pfloat::load(s.rd[2])));
+  const pfloat rd[3] = {pfloat::load(s.rd[0]), pfloat::load(s.rd[1]), pfloat::load(s.rd[2])};
+  const pfloat r = vmax(vmax(abs(rd[0]), abs(rd[1])), abs(rd[2]));
   if (bvh.box_epsilon >= 0x1p-20f && (bits(pfloat::load(s.soa[6]) >= zero) & active) == active &&
       (bits(r * m <= big) & active) == active) {
     unsigned neg[3];  // lanes with a negative direction component; uniform: none or all
     bool uniform = true;
     for (int a = 0; a < 3; ++a) {
-      neg[a] = bits(pfloat::load(s.rd[a]) < zero) & active;
+      neg[a] = bits(rd[a] < zero) & active;
       uniform = uniform && (neg[a] == 0 || neg[a] == active);
     }
     if (uniform) {
@@ -305,9 +305,8 @@ RAYVEC_INLINE void with_packet_boxes(const BvhArrays& bvh, const PacketRows& s, 
       const pfloat d[3] = {pfloat::load(s.soa[3]), pfloat::load(s.soa[4]), pfloat::load(s.soa[5])};
       // the hull built in place: a copy of its scalars, read back as vectors before their stores
       // have left, stalls (a braced list is evaluated in order: tmax is set before it is read)
-      const pfloat r[3] = {pfloat::load(s.rd[0]), pfloat::load(s.rd[1]), pfloat::load(s.rd[2])};
       float tmax;
-      PacketChildren<B, true> children{boxes.hull(r, active, &tmax), tmax,
+      PacketChildren<B, true> children{boxes.hull(rd, active, &tmax), tmax,
                                        slot_cull(bvh.packet_slot_cull, hmax_lanes(m, active), d, active)};
       traverse(boxes, children);
     } else {
