@@ -62,39 +62,47 @@ TriangleNormals TriangleNormals::for_render(const Scene& scene, int spp, std::si
   return worth_it(scene.mesh.size(), camera_rays, available) ? TriangleNormals(scene) : TriangleNormals();
 }
 
-SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
-                           const TriangleNormals* normals) {
+void surface_point(const Scene& scene, const Ray& ray, const Hit& hit, const TriangleNormals* normals,
+                   SurfacePoint& s) {
+  // Formed in locals and stored once at the end: fields read back right after their stores would
+  // wait on store forwarding.
   const std::size_t t = static_cast<std::size_t>(hit.tri);
   const Vec3f v0 = scene.mesh.vertex(t, 0), e1 = scene.mesh.vertex(t, 1) - v0,
               e2 = scene.mesh.vertex(t, 2) - v0;
-  SurfacePoint s;
-  s.p = v0 + e1 * hit.u + e2 * hit.v;
-  s.ng = normals && !normals->empty() ? (*normals)[t] : unit_normal(e1, e2);
-  if (s.ng == Vec3f{0, 0, 0}) s.ng = -normalize(ray.dir);  // degenerate: face the ray
-  s.entering = dot(s.ng, ray.dir) < 0;
-  if (!s.entering) s.ng = -s.ng;
-  s.ns = s.ng;
+  Vec3f ng = normals && !normals->empty() ? (*normals)[t] : unit_normal(e1, e2);
+  if (ng == Vec3f{0, 0, 0}) ng = -normalize(ray.dir);  // degenerate: face the ray
+  const bool entering = dot(ng, ray.dir) < 0;
+  if (!entering) ng = -ng;
+  Vec3f ns = ng;
   if (const auto corners = scene.normals(t)) {
     const auto& n = *corners;
     const float w = 1.0f - hit.u - hit.v;
-    const Vec3f ns = n[0] * w + n[1] * hit.u + n[2] * hit.v;
-    if (max_abs(ns) > 0 && max_abs(ns) <= kMaxFinite) {
-      s.ns = normalize_any(ns);
-      if (dot(s.ns, s.ng) < 0) s.ns = -s.ns;
+    const Vec3f interpolated = n[0] * w + n[1] * hit.u + n[2] * hit.v;
+    if (max_abs(interpolated) > 0 && max_abs(interpolated) <= kMaxFinite) {
+      ns = normalize_any(interpolated);
+      if (dot(ns, ng) < 0) ns = -ns;
     }
   }
+  float u = 0, v = 0;
   if (const auto corners = scene.uv(t)) {
     const auto& uv = *corners;
     const float w = 1.0f - hit.u - hit.v;
-    s.u = uv[0][0] * w + uv[1][0] * hit.u + uv[2][0] * hit.v;
-    s.v = uv[0][1] * w + uv[1][1] * hit.u + uv[2][1] * hit.v;
+    u = uv[0][0] * w + uv[1][0] * hit.u + uv[2][0] * hit.v;
+    v = uv[0][1] * w + uv[1][1] * hit.u + uv[2][1] * hit.v;
   }
+  Vec3f color{1, 1, 1};
   if (const auto corners = scene.colors(t)) {
     const auto& c = *corners;
-    s.color = c[0] * (1.0f - hit.u - hit.v) + c[1] * hit.u + c[2] * hit.v;
+    color = c[0] * (1.0f - hit.u - hit.v) + c[1] * hit.u + c[2] * hit.v;
   }
+  s.p = v0 + e1 * hit.u + e2 * hit.v;
+  s.ng = ng;
+  s.ns = ns;
+  s.entering = entering;
+  s.u = u;
+  s.v = v;
+  s.color = color;
   s.material = scene.triangle_material[t];
-  return s;
 }
 
 Vec3f diffuse_albedo(const Scene& scene, const SurfacePoint& s) {

@@ -40,9 +40,16 @@ class TriangleNormals {
   std::vector<Vec3f> normals_;
 };
 
-// `normals`: the scene's TriangleNormals, or null (or empty) to compute the hit triangle's.
-SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
-                           const TriangleNormals* normals = nullptr);
+// `normals`: the scene's TriangleNormals, or null (or empty) to compute the hit triangle's. Written
+// into `s`: a caller that keeps the point reads it where it was stored once, not a returned copy.
+void surface_point(const Scene& scene, const Ray& ray, const Hit& hit, const TriangleNormals* normals,
+                   SurfacePoint& s);
+inline SurfacePoint surface_point(const Scene& scene, const Ray& ray, const Hit& hit,
+                                  const TriangleNormals* normals = nullptr) {
+  SurfacePoint s;
+  surface_point(scene, ray, hit, normals, s);
+  return s;
+}
 
 // Diffuse albedo at the point: Kd, times the map_Kd texture (bilinear, repeating, at the texture
 // coordinates scaled and offset as the MTL's `-s` and `-o` say) when present, times the vertex

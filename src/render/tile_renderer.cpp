@@ -76,22 +76,22 @@ void TileRenderer::render(const TileRect& rect, float* out) {
   }
   // rays go by 4×4 blocks (a packet's rays closer together than a row's); pixel = block_order_[ray]
   block_order_.clear();
+  seeds_.clear();
+  pixel_x_.clear();
+  pixel_y_.clear();
   const int h = n / w;
   for (int by = 0; by < h; by += 4)
     for (int bx = 0; bx < w; bx += 4)
       for (int y = by; y < std::min(by + 4, h); ++y)
-        for (int x = bx; x < std::min(bx + 4, w); ++x) block_order_.push_back(y * w + x);
-  seeds_.resize(n);
-  pixel_x_.resize(n);
-  pixel_y_.resize(n);
+        for (int x = bx; x < std::min(bx + 4, w); ++x) {
+          block_order_.push_back(y * w + x);
+          const int px = rect.x0 + x, py = rect.y0 + y;
+          seeds_.push_back(spp > 1 ? PixelSamples::seed(px, py) : 0);  // one sample: the centre, no jitter
+          pixel_x_.push_back(float(px));
+          pixel_y_.push_back(float(py));
+        }
   sample_x_.resize(n);
   sample_y_.resize(n);
-  for (int j = 0; j < n; ++j) {
-    const int i = block_order_[j], x = rect.x0 + i % w, y = rect.y0 + i / w;
-    seeds_[j] = spp > 1 ? PixelSamples::seed(x, y) : 0;  // one sample: the centre, no jitter
-    pixel_x_[j] = float(x);
-    pixel_y_[j] = float(y);
-  }
   for (int s = 0; s < spp; ++s) {
     const auto ta = std::chrono::steady_clock::now();
     batch_.resize(n);

@@ -102,8 +102,8 @@ Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, 
 
 bool Whitted::lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const {
   if (!hit.hit()) return false;
-  s = surface_point(scene_, ray, hit, normals_);
-  return shaders::is_lit(shaders::shading_model(scene_.materials[s.material]));
+  surface_point(scene_, ray, hit, normals_, s);
+  return shaders::is_lit(shaders::shading_model(scene_.materials[scene_.triangle_material[hit.tri]]));
 }
 
 void Whitted::light_samples(const SurfacePoint& s, LightSample* out) const {
@@ -128,7 +128,9 @@ Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight
     if (observer_) observer_->local(scene_.background);
     return scene_.background;
   }
-  const SurfacePoint s = lit ? lit->s : surface_point(scene_, ray, hit, normals_);
+  SurfacePoint computed;
+  if (!lit) surface_point(scene_, ray, hit, normals_, computed);
+  const SurfacePoint& s = lit ? lit->s : computed;
   const Material& m = scene_.materials[s.material];
   const shaders::ShadingModel model = shaders::shading_model(m);
   const Vec3f kd = diffuse_albedo(scene_, s);
