@@ -6,13 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "platform/large_buffer.h"
+
 namespace rayvec {
 
 struct Image {
   int width = 0;
   int height = 0;
-  std::vector<std::string> channels;  // e.g. {"R", "G", "B"}; the first three are colour
-  std::vector<float> pixels;          // width * height * channels.size()
+  std::vector<std::string> channels;                 // e.g. {"R", "G", "B"}; the first three are colour
+  std::vector<float, LargeAllocator<float>> pixels;  // width * height * channels.size()
 
   Image() = default;
   Image(int w, int h, std::vector<std::string> names)

@@ -35,12 +35,17 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// 8-bit sRGB bytes for a PNG: encode, clamp, round to nearest (no dither, so output is repeatable),
-// by the table of srgb8.h rather than a pow() per channel.
-std::vector<std::uint8_t> encode_png_pixels(const Image& image) {
-  std::vector<std::uint8_t> bytes(std::size_t(image.width) * image.height * 3);
-  srgb8_pixels(image.pixels.data(), image.nchannels(), std::size_t(image.width) * image.height, bytes.data());
-  return bytes;
+// The image as a PNG: 8-bit sRGB bytes (encode, clamp, round to nearest; no dither, so output is
+// repeatable), by the table of srgb8.h rather than a pow() per channel, a row at a time.
+std::vector<std::uint8_t> encode_png(const Image& image, const ImageMetadata& metadata) {
+  const std::size_t row_floats = std::size_t(image.width) * std::size_t(image.nchannels());
+  return encode_png_rgb8(
+      image.width, image.height,
+      [&](int y, std::uint8_t* row) {
+        srgb8_pixels(image.pixels.data() + std::size_t(y) * row_floats, image.nchannels(),
+                     std::size_t(image.width), row);
+      },
+      metadata);
 }
 
 enum class Format { png, jpeg, exr, other };
@@ -106,9 +111,7 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
   meta.insert(meta.end(), metadata.begin(), metadata.end());
   std::vector<std::uint8_t> bytes;
   try {
-    bytes = lower_extension(path) == ".png"
-                ? encode_png_rgb8(image.width, image.height, encode_png_pixels(image), meta)
-                : encode_exr(image, meta);
+    bytes = lower_extension(path) == ".png" ? encode_png(image, meta) : encode_exr(image, meta);
   } catch (const RuntimeError& e) {
     throw RuntimeError("cannot write " + path + ": " + e.what());
   }

@@ -10,6 +10,7 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
 #include <memory>
 
 #include "image/image_budget.h"
@@ -75,7 +76,8 @@ bool read_rows(PngContext& ctx, png_bytepp rows) {
   return true;
 }
 
-bool write_all(PngContext& ctx, int width, int height, png_bytepp rows, png_textp text, int ntext) {
+bool write_all(PngContext& ctx, int width, int height, const PngRowSource& rows, png_bytep row,
+               png_textp text, int ntext) {
   if (setjmp(png_jmpbuf(ctx.png))) return false;
   png_set_write_fn(ctx.png, &ctx, on_png_write, on_png_flush);
   png_set_IHDR(ctx.png, ctx.info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
@@ -88,7 +90,10 @@ bool write_all(PngContext& ctx, int width, int height, png_bytepp rows, png_text
   png_set_sRGB_gAMA_and_cHRM(ctx.png, ctx.info, PNG_sRGB_INTENT_PERCEPTUAL);
   if (ntext > 0) png_set_text(ctx.png, ctx.info, text, ntext);
   png_write_info(ctx.png, ctx.info);
-  png_write_image(ctx.png, rows);
+  for (int y = 0; y < height; ++y) {
+    rows(y, row);
+    png_write_row(ctx.png, row);
+  }
   png_write_end(ctx.png, ctx.info);
   return true;
 }
@@ -166,7 +171,7 @@ Image read_png(const std::string& path, bool* sixteen_bit) {
   return image_of_bytes(raw);
 }
 
-std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const std::vector<std::uint8_t>& rgb,
+std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const PngRowSource& rows,
                                           const ImageMetadata& metadata) {
   std::vector<std::uint8_t> out;
   PngContext ctx;
@@ -180,18 +185,25 @@ std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const std::vect
   ctx.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_png_error, on_png_warning);
   if (ctx.png) ctx.info = png_create_info_struct(ctx.png);
   if (!ctx.png || !ctx.info) throw RuntimeError("cannot encode PNG: out of memory");
-  std::vector<png_bytep> rows(static_cast<std::size_t>(height));
-  for (int y = 0; y < height; ++y)
-    rows[std::size_t(y)] = const_cast<png_bytep>(rgb.data()) + std::size_t(y) * std::size_t(width) * 3;
+  std::vector<png_byte> row(std::size_t(width) * 3);
   std::vector<png_text> text(metadata.size());
   for (std::size_t i = 0; i < metadata.size(); ++i) {
     text[i].compression = PNG_TEXT_COMPRESSION_NONE;
     text[i].key = const_cast<char*>(metadata[i].first.c_str());
     text[i].text = const_cast<char*>(metadata[i].second.c_str());
   }
-  if (!write_all(ctx, width, height, rows.data(), text.data(), int(text.size())))
+  if (!write_all(ctx, width, height, rows, row.data(), text.data(), int(text.size())))
     throw RuntimeError(std::string("cannot encode PNG: ") + ctx.error);
   return out;
+}
+
+std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const std::vector<std::uint8_t>& rgb,
+                                          const ImageMetadata& metadata) {
+  const std::size_t row_bytes = std::size_t(width) * 3;
+  return encode_png_rgb8(
+      width, height,
+      [&](int y, std::uint8_t* row) { std::copy_n(rgb.data() + std::size_t(y) * row_bytes, row_bytes, row); },
+      metadata);
 }
 
 }  // namespace rayvec

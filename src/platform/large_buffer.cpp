@@ -9,7 +9,8 @@ namespace rayvec {
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
-constexpr std::size_t kHugeFrom = std::size_t(4) << 20;  // smaller: the rounding would waste too much
+// From one huge page up; smaller, rounding up to a whole huge page would waste more than half of it.
+constexpr std::size_t kHugeFrom = kHugePage;
 
 }  // namespace
 

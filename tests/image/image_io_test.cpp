@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include "image/compare.h"
 #include "image/image_io.h"
+#include "image/srgb8.h"
 #include "io/input_error.h"
 #include "test_support.h"
 
@@ -50,6 +52,27 @@ TEST(ImageIo, PngIsSrgbEncoded8Bit) {
   EXPECT_FLOAT_EQ(back.at(1, 0, 1), 1.0f);
   EXPECT_FLOAT_EQ(back.at(1, 0, 0), 0.0f);
   EXPECT_NEAR(srgb_decode(srgb_encode(0.3f)), 0.3f, 1e-6f);
+}
+
+TEST(ImageIo, PngRowsComeFromTheirOwnRowsWhateverTheChannels) {
+  const std::string dir = test::temp_dir("png_rows");
+  const Image img = gradient(37, 23);  // R G B Z: four floats a pixel, three bytes in the PNG
+  write_image(dir + "/g.png", img);
+  const Image back = read_image(dir + "/g.png");
+  ASSERT_EQ(back.width, 37);
+  ASSERT_EQ(back.height, 23);
+  for (int y = 0; y < 23; ++y)
+    for (int x = 0; x < 37; ++x)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(back.at(x, y, c), float(srgb8(img.at(x, y, c))) * (1.0f / 255.0f))
+            << x << "," << y << "," << c;
+}
+
+TEST(Image, APixelArrayOfAHugePageOrMoreStartsOnOne) {
+  // A render's framebuffer: its first touch takes huge-page faults (platform/large_buffer.h).
+  const Image image(640, 480, {"R", "G", "B"});  // 3.5 MiB
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(image.pixels.data()) % (std::size_t(2) << 20), 0u);
+  EXPECT_EQ(image.pixels.back(), 0.0f);
 }
 
 TEST(ImageIo, UnknownExtensionIsInputErrorAndWritesNothing) {
