@@ -6,7 +6,6 @@
 #include <png.h>
 #include <sys/stat.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
@@ -195,15 +194,6 @@ std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const PngRowSou
   if (!write_all(ctx, width, height, rows, row.data(), text.data(), int(text.size())))
     throw RuntimeError(std::string("cannot encode PNG: ") + ctx.error);
   return out;
-}
-
-std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const std::vector<std::uint8_t>& rgb,
-                                          const ImageMetadata& metadata) {
-  const std::size_t row_bytes = std::size_t(width) * 3;
-  return encode_png_rgb8(
-      width, height,
-      [&](int y, std::uint8_t* row) { std::copy_n(rgb.data() + std::size_t(y) * row_bytes, row_bytes, row); },
-      metadata);
 }
 
 }  // namespace rayvec

@@ -29,8 +29,5 @@ using PngRowSource = std::function<void(int y, std::uint8_t* row)>;
 // (a fresh buffer of that size costs more in page faults than the encoding of its bytes).
 std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const PngRowSource& rows,
                                           const ImageMetadata& metadata);
-// The same from `rgb`: width*height*3 bytes, top row first.
-std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const std::vector<std::uint8_t>& rgb,
-                                          const ImageMetadata& metadata);
 
 }  // namespace rayvec

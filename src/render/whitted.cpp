@@ -103,6 +103,7 @@ Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, 
 bool Whitted::lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const {
   if (!hit.hit()) return false;
   surface_point(scene_, ray, hit, normals_, s);
+  // The material from the scene, not s.material: that field was stored a moment ago.
   return shaders::is_lit(shaders::shading_model(scene_.materials[scene_.triangle_material[hit.tri]]));
 }
 

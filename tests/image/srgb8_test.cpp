@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -120,7 +121,8 @@ TEST(Srgb8, TextureDecodeEqualsTheFormula) {
   for (int k = 0; k < 256; ++k)
     rgb[std::size_t(k) * 3] = rgb[std::size_t(k) * 3 + 1] = rgb[std::size_t(k) * 3 + 2] = std::uint8_t(k);
   const std::string path = test::temp_dir("srgb8_texture") + "/codes.png";
-  const std::vector<std::uint8_t> png = encode_png_rgb8(256, 1, rgb, {});
+  const std::vector<std::uint8_t> png =
+      encode_png_rgb8(256, 1, [&](int, std::uint8_t* row) { std::copy(rgb.begin(), rgb.end(), row); }, {});
   test::write_file(path, std::string(png.begin(), png.end()));
   const Texture tex = read_texture(path);
   EXPECT_TRUE(tex.holds_codes());
