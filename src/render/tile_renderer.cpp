@@ -30,42 +30,8 @@ TileRenderer::TileRenderer(const Scene& scene, const Accelerator& accel, const R
       counting_(settings.aov.cost || settings.aov.bounces),
       pixel_cost_(accel),
       whitted_(scene, accel, settings, counting_ ? &pixel_cost_ : nullptr, normals),
-      samples_(settings.spp) {}
-
-void TileRenderer::trace_shadow_rays(int n) {
-  const std::size_t lights = scene_.lights.size();
-  surfaces_.resize(std::size_t(n));
-  lit_.resize(std::size_t(n));
-  if (lights > kStreamedLights) {  // shade() traces them one by one
-    std::fill(lit_.begin(), lit_.end(), uint8_t(0));
-    return;
-  }
-  light_samples_.resize(std::size_t(n) * lights);
-  shadow_index_.assign(std::size_t(n) * lights, -1);
-  blocked_.resize(lights);
-  light_rays_.resize(lights);
-  light_blocked_.resize(lights);
-  for (int j = 0; j < n; ++j) {
-    lit_[j] = whitted_.lit_surface(batch_[j], hits_[j], surfaces_[j]);
-    if (lit_[j]) whitted_.light_samples(surfaces_[j], light_samples_.data() + std::size_t(j) * lights);
-  }
-  // Gathered after every sample is written, so the copies read memory, not stores in flight.
-  for (auto& r : light_rays_) r.clear();
-  if (whitted_.shadows_on()) {
-    for (int j = 0; j < n; ++j) {
-      if (!lit_[j]) continue;
-      for (std::size_t li = 0, k = std::size_t(j) * lights; li < lights; ++li, ++k) {
-        if (!light_samples_[k].faces) continue;
-        shadow_index_[k] = int32_t(light_rays_[li].size());
-        light_rays_[li].push_back(light_samples_[k].shadow);
-      }
-    }
-  }
-  for (std::size_t li = 0; li < lights; ++li) {
-    light_blocked_[li].resize(light_rays_[li].size());
-    accel_.occluded_stream(light_rays_[li].data(), light_blocked_[li].data(), light_rays_[li].size());
-  }
-}
+      samples_(settings.spp),
+      lighting_(scene, accel, whitted_) {}
 
 void TileRenderer::render(const TileRect& rect, float* out) {
   const int w = rect.width(), n = rect.pixels(), spp = samples_.count();
@@ -106,24 +72,20 @@ void TileRenderer::render(const TileRect& rect, float* out) {
     rays.primary += uint64_t(n);
     const auto tb = std::chrono::steady_clock::now();
     primary_seconds += std::chrono::duration<double>(tb - ta).count();
-    trace_shadow_rays(n);
-    const std::size_t lights = scene_.lights.size();
+    const bool together = !counting_;
+    if (together) lighting_.light(batch_.data(), hits_.data(), n);
     for (int j = 0; j < n; ++j) {
       const int i = block_order_[j];
       const Ray& ray = batch_[j];
       const Hit& h = hits_[j];
+      const bool lit = together && lighting_.lit(j);
       rays.primary_hits += h.hit() ? 1 : 0;
       if (counting_) pixel_cost_.reset();
-      if (lit_[j]) {
-        for (std::size_t li = 0; li < lights; ++li) {
-          const int32_t k = shadow_index_[std::size_t(j) * lights + li];
-          blocked_[li] = k < 0 ? 0 : light_blocked_[li][std::size_t(k)];
-        }
-        sum_[i] += whitted_.shade_primary(
-            ray, h, surfaces_[j], light_samples_.data() + std::size_t(j) * lights, blocked_.data(), rays);
-      } else {
+      if (lit)
+        sum_[i] += whitted_.shade_primary(ray, h, lighting_.surface(j), lighting_.direct(j),
+                                          lighting_.shadow_rays(j), rays);
+      else
         sum_[i] += whitted_.shade(ray, h, 0, 1.0f, rays);
-      }
       if (counting_) {
         costs_[i] += pixel_cost_.cost;
         bounces_[i] = std::max(bounces_[i], pixel_cost_.bounces);
@@ -132,7 +94,7 @@ void TileRenderer::render(const TileRect& rect, float* out) {
       // AOVs from the first sample.
       float* px = out + std::size_t(i) * channels_ + 3;
       SurfacePoint sp;
-      if (h.hit()) sp = lit_[j] ? surfaces_[j] : surface_point(scene_, ray, h, normals_);
+      if (h.hit()) sp = lit ? lighting_.surface(j) : surface_point(scene_, ray, h, normals_);
       if (settings_.aov.depth) *px++ = h.hit() ? h.t * dot(ray.dir, camera_.forward()) : kInf;
       if (settings_.aov.normal) {
         const Vec3f nrm = h.hit() ? sp.ns : Vec3f{};

@@ -11,15 +11,13 @@
 #include "render/pixel_cost.h"
 #include "render/pixel_samples.h"
 #include "render/render_stats.h"
+#include "render/tile_lighting.h"
 #include "render/whitted.h"
 #include "scene/scene.h"
 
 namespace rayvec {
 
 inline constexpr int kTileSize = 16;
-// Scenes with at most this many lights trace their camera hits' shadow rays as streams (a tile's
-// light samples take kTileSize² · lights · ~64 bytes); more lights, one by one.
-inline constexpr std::size_t kStreamedLights = 64;
 
 struct TileRect {
   int x0, y0, x1, y1;  // pixels [x0, x1) × [y0, y1)
@@ -61,11 +59,6 @@ class TileRenderer {
   double primary_seconds = 0, shading_seconds = 0;  // thread-seconds: closest_stream, and the rest
 
  private:
-  // The shadow rays of the n primary hits in batch_ / hits_, traced light by light as streams:
-  // fills surfaces_, lit_, light_samples_, shadow_index_, light_rays_ and light_blocked_ (with more
-  // than kStreamedLights lights only lit_, all 0).
-  void trace_shadow_rays(int n);
-
   const Scene& scene_;
   const Accelerator& accel_;
   const RenderSettings& settings_;
@@ -81,16 +74,9 @@ class TileRenderer {
   std::vector<float> pixel_x_, pixel_y_, sample_x_, sample_y_;  // pixel corners, sample positions
   std::vector<Ray> batch_;
   std::vector<Hit> hits_;
-  // The primary hits' shadow rays, traced together: each hit's lit surface point and light samples
-  // (per hit, one per light); per light the shadow rays in the tile's order and their answers; per
-  // hit and light the ray's index there (−1: none).
-  std::vector<SurfacePoint> surfaces_;
-  std::vector<uint8_t> lit_;  // surfaces_[j] holds hit j's point (Whitted::lit_surface)
-  std::vector<Whitted::LightSample> light_samples_;
-  std::vector<std::vector<Ray>> light_rays_;
-  std::vector<std::vector<uint8_t>> light_blocked_;
-  std::vector<int32_t> shadow_index_;
-  std::vector<uint8_t> blocked_;
+  // The camera hits' direct light, computed together; renders that count each pixel's rays (an
+  // observer) shade them one by one instead.
+  TileLighting lighting_;
   std::vector<Vec3f> sum_;
   std::vector<TraversalCost> costs_;
   std::vector<int> bounces_;

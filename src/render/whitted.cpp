@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "render/light_sample.h"
 #include "render/offset_ray.h"
 #include "shaders/blinn_phong.h"
 #include "shaders/dielectric.h"
@@ -11,13 +12,6 @@
 #include "shaders/shading_model.h"
 
 namespace rayvec {
-namespace {
-
-// Just short of the light: an occluder exactly at the light's position does not shadow.
-constexpr float kBeforeLight = 0.99999f;
-
-}  // namespace
-
 bool Whitted::child_worthwhile(int depth, float weight) const {
   return depth + 1 <= settings_.max_depth && weight >= settings_.min_contribution && weight > 0;
 }
@@ -49,53 +43,28 @@ Vec3f Whitted::shade_observed(RayKind kind, Vec3f factor, const Ray& ray, const 
   return radiance;
 }
 
-void Whitted::light_sample(const SurfacePoint& s, Vec3f origin, const Light& light, LightSample& l) const {
-  // Computed in locals and stored once: a field read back right after its stores (the shadow ray's
-  // direction from to_light) would wait on store forwarding.
-  l.faces = false;
-  if (max_component(light.power) <= 0) return;
-  Vec3f to_light, irradiance, shadow_dir;
-  float tmax = kInf;
-  if (light.type == Light::Type::point) {
-    const Vec3f d = light.position - s.p;
-    const float r2 = dot(d, d);
-    if (!(r2 > 0)) return;
-    to_light = d * (1.0f / std::sqrt(r2));
-    irradiance = light.power * (1.0f / r2);  // I / r²
-    shadow_dir = light.position - origin;    // the light sits at t = 1
-    tmax = kBeforeLight;
-  } else {
-    to_light = -light.direction;
-    irradiance = light.power;
-    shadow_dir = to_light;
-  }
-  // Only lights on the lit side of both normals can contribute: no shadow ray otherwise.
-  const float cos_s = dot(s.ns, to_light);
-  l = LightSample{to_light, irradiance, cos_s, Ray{origin, shadow_dir, 0.0f, tmax},
-                  dot(s.ng, to_light) > 0 && cos_s > 0};
-}
-
-Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye, RayCounts& rays,
-                            const Precomputed* lit) const {
+Vec3f Whitted::direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye,
+                            RayCounts& rays) const {
   Vec3f sum{};
   const bool highlight = shaders::has_highlight(shaders::shading_model(m));
-  const Vec3f origin = lit ? Vec3f{} : offset_ray_origin(s.p, s.ng);
-  LightSample computed;
+  const Vec3f origin = offset_ray_origin(s.p, s.ng);
   for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
-    if (!lit) light_sample(s, origin, scene_.lights[li], computed);
-    const LightSample& l = lit ? lit->samples[li] : computed;
-    if (!l.faces) continue;
-    if (settings_.effects.shadows) {
+    const Light& light = scene_.lights[li];
+    if (!has_power(light)) continue;
+    const LightSample l = light_sample(light, s.p, s.ng, s.ns);
+    if (!l.faces) continue;  // only lights on the lit side of both normals: no shadow ray otherwise
+    const bool shadows = settings_.effects.shadows;
+    const Ray shadow = shadows ? shadow_ray(light, origin) : Ray{};
+    if (shadows) {
       ++rays.shadow;
-      const bool blocked = lit ? lit->blocked[li] != 0 : accel_.occluded(l.shadow);
-      if (observer_ && blocked) observer_->shadow(l.shadow, int(li), true, Vec3f{});
+      const bool blocked = accel_.occluded(shadow);
+      if (observer_ && blocked) observer_->shadow(shadow, int(li), true, Vec3f{});
       if (blocked) continue;
     }
-    const Vec3f e = l.irradiance * l.cos_s;
-    Vec3f light = shaders::lambert(kd, e);
-    if (highlight) light += shaders::blinn_phong(m.Ks, m.Ns, s.ns, l.to_light, to_eye, e);
-    sum += light;
-    if (observer_ && settings_.effects.shadows) observer_->shadow(l.shadow, int(li), false, light);
+    Vec3f lit = shaders::lambert(kd, l.irradiance);
+    if (highlight) lit += shaders::blinn_phong(m.Ks, m.Ns, s.ns, l.to_light, to_eye, l.irradiance);
+    sum += lit;
+    if (observer_ && shadows) observer_->shadow(shadow, int(li), false, lit);
   }
   return sum;
 }
@@ -107,20 +76,10 @@ bool Whitted::lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const
   return shaders::is_lit(shaders::shading_model(scene_.materials[scene_.triangle_material[hit.tri]]));
 }
 
-void Whitted::light_samples(const SurfacePoint& s, LightSample* out) const {
-  const Vec3f origin = offset_ray_origin(s.p, s.ng);
-  for (std::size_t li = 0; li < scene_.lights.size(); ++li)
-    light_sample(s, origin, scene_.lights[li], out[li]);
-}
-
-Vec3f Whitted::shade_primary(const Ray& ray, const Hit& hit, const SurfacePoint& s,
-                             const LightSample* samples, const uint8_t* blocked, RayCounts& rays) const {
-  const Precomputed lit{s, samples, blocked};
-  if (!observer_) return shade_hit(ray, hit, 0, 1.0f, rays, &lit);
-  observer_->enter(RayKind::camera, ray, hit, 0, 1.0f, Vec3f{1, 1, 1});
-  const Vec3f radiance = shade_hit(ray, hit, 0, 1.0f, rays, &lit);
-  observer_->leave(radiance);
-  return radiance;
+Vec3f Whitted::shade_primary(const Ray& ray, const Hit& hit, const SurfacePoint& s, Vec3f direct,
+                             uint32_t shadow_rays, RayCounts& rays) const {
+  const Precomputed lit{s, direct, shadow_rays};
+  return shade_hit(ray, hit, 0, 1.0f, rays, &lit);
 }
 
 Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays,
@@ -134,14 +93,21 @@ Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight
   const SurfacePoint& s = lit ? lit->s : computed;
   const Material& m = scene_.materials[s.material];
   const shaders::ShadingModel model = shaders::shading_model(m);
-  const Vec3f kd = diffuse_albedo(scene_, s);
   if (!shaders::is_lit(model)) {  // constant colour, no lighting
+    const Vec3f kd = diffuse_albedo(scene_, s);
     if (observer_) observer_->local(m.Ke + kd);
     return m.Ke + kd;
   }
 
   const Vec3f dir = normalize(ray.dir);
-  Vec3f radiance = m.Ka * scene_.ambient + direct_light(s, m, kd, -dir, rays, lit);
+  Vec3f direct;
+  if (lit) {
+    direct = lit->direct;
+    rays.shadow += lit->shadow_rays;
+  } else {
+    direct = direct_light(s, m, diffuse_albedo(scene_, s), -dir, rays);
+  }
+  Vec3f radiance = m.Ka * scene_.ambient + direct;
   if (shaders::refracts(m)) radiance *= m.d;  // dissolve: the local term's opacity over the refraction
   radiance += m.Ke;
   if (observer_) observer_->local(radiance);

@@ -50,10 +50,10 @@ TEST(TileRenderer, TilesInAnyOrderMakeRendersImage) {
   EXPECT_EQ(rays.total(), stats.rays.total());
 }
 
-// A tile traces its primary hits' shadow rays together, light by light (Whitted::lit_surface,
-// light_samples, shade_primary); each pixel must come out as Whitted::shade() tracing them one by
-// one makes it, bit for bit, with the same ray counts — with lights below the floor, without power
-// and directional, with more lights than are streamed, and with shadows off.
+// A tile lights its camera hits together, light by light and lane by lane (TileLighting,
+// Whitted::shade_primary); each pixel must come out as Whitted::shade() lighting them one by one
+// makes it, bit for bit, with the same ray counts — with lights below the floor, without power and
+// directional, with many lights, and with shadows off.
 TEST(TileRenderer, ShadowRaysTracedTogetherShadeAsOneByOne) {
   for (const char* name : {"whitted", "shadows", "cornell_box", "refraction"}) {
     for (const bool shadows : {true, false}) {
@@ -63,8 +63,8 @@ TEST(TileRenderer, ShadowRaysTracedTogetherShadeAsOneByOne) {
       scene.lights.push_back(Light{Light::Type::point, {0, -50, 0}, {0, -1, 0}, {30, 30, 30}});  // below
       scene.lights.push_back(Light{Light::Type::point, {0, 2, 0}, {0, -1, 0}, {0, 0, 0}});       // no power
       scene.lights.push_back(Light{Light::Type::directional, {}, {0.6f, -0.8f, 0}, {0.5f, 0.5f, 0.5f}});
-      if (std::string(name) == "refraction")  // past kStreamedLights: shaded one by one
-        while (scene.lights.size() <= kStreamedLights)
+      if (std::string(name) == "refraction")
+        while (scene.lights.size() <= 70)
           scene.lights.push_back(Light{Light::Type::point,
                                        {float(scene.lights.size() % 7) - 3.0f, 5, 2},
                                        {0, -1, 0},
