@@ -78,7 +78,18 @@ void add_lanes(Lanes3In kd, Lanes3In ks, const int32_t* __restrict highlight,
   }
 }
 
+// shade()'s local term of a lit hit whose material spawns no ray, over n hits: Ka·ambient + direct
+// light + Ke, as Whitted::shade_hit sums it.
+void local_lanes(Lanes3In ka, Vec3f ambient, Lanes3In direct, Lanes3In ke, Lanes3Out radiance, int n) {
+  for (int j = 0; j < n; ++j) radiance.set(j, ka[j] * ambient + direct[j] + ke[j]);
+}
+
 }  // namespace
+
+TileLighting::TileLighting(const Scene& scene, const Accelerator& accel, const Whitted& whitted)
+    : scene_(scene), accel_(accel), whitted_(whitted) {
+  for (const Material& m : scene.materials) local_only_.push_back(Whitted::local_only(m));
+}
 
 void TileLighting::light(const Ray* rays, const Hit* hits, int n) {
   load_hits(rays, hits, n);
@@ -88,23 +99,26 @@ void TileLighting::light(const Ray* rays, const Hit* hits, int n) {
     if (whitted_.shadows_on()) trace_shadows(light, n);
     add_reaching(n);
   }
+  local_lanes(in(ka_), scene_.ambient, in(sum_), in(ke_), out(radiance_), n);
 }
 
 void TileLighting::load_hits(const Ray* rays, const Hit* hits, int n) {
   surfaces_.resize(std::size_t(n));
-  for (auto* v : {&lit_, &highlight_, &specular_, &reaches_}) v->resize(std::size_t(n));
-  for (auto* v : {&p_, &ng_, &ns_, &origin_, &to_eye_, &kd_, &ks_, &sum_, &irradiance_}) v->resize(n);
+  for (auto* v : {&lit_, &finished_, &highlight_, &specular_, &reaches_}) v->resize(std::size_t(n));
+  for (auto* v :
+       {&p_, &ng_, &ns_, &origin_, &to_eye_, &kd_, &ks_, &ka_, &ke_, &sum_, &radiance_, &irradiance_})
+    v->resize(n);
   ns_exp_.resize(std::size_t(n));
   cos_h_.resize(std::size_t(n));
   lobe_.resize(std::size_t(n));
-  shadow_rays_.assign(std::size_t(n), 0);
+  shadow_rays_ = 0;
   for (int j = 0; j < n; ++j) {
     SurfacePoint& s = surfaces_[j];
     lit_[j] = whitted_.lit_surface(rays[j], hits[j], s);
     sum_.set(j, Vec3f{});
     if (!lit_[j]) {  // lanes that are computed and never read
-      for (auto* v : {&p_, &ng_, &ns_, &to_eye_, &kd_, &ks_}) v->set(j, Vec3f{});
-      highlight_[j] = specular_[j] = 0;
+      for (auto* v : {&p_, &ng_, &ns_, &to_eye_, &kd_, &ks_, &ka_, &ke_}) v->set(j, Vec3f{});
+      finished_[j] = highlight_[j] = specular_[j] = 0;
       ns_exp_[j] = 0;
       continue;
     }
@@ -115,6 +129,9 @@ void TileLighting::load_hits(const Ray* rays, const Hit* hits, int n) {
     to_eye_.set(j, rays[j].dir);  // normalized below
     kd_.set(j, diffuse_albedo(scene_, s));
     ks_.set(j, m.Ks);
+    ka_.set(j, m.Ka);
+    ke_.set(j, m.Ke);
+    finished_[j] = local_only_[std::size_t(s.material)];
     ns_exp_[j] = m.Ns;
     highlight_[j] = shaders::has_highlight(shaders::shading_model(m));
     specular_[j] = shaders::has_specular(m.Ks);
@@ -138,8 +155,8 @@ void TileLighting::trace_shadows(const Light& light, int n) {
     if (!reaches_[j]) continue;
     shadow_batch_[count] = shadow_ray(light, origin_[j]);
     shadow_hit_[count++] = j;
-    ++shadow_rays_[j];
   }
+  shadow_rays_ += count;
   blocked_.resize(count);
   accel_.occluded_stream(shadow_batch_.data(), blocked_.data(), count);
   for (std::size_t k = 0; k < count; ++k)
@@ -149,7 +166,7 @@ void TileLighting::trace_shadows(const Light& light, int n) {
 void TileLighting::add_reaching(int n) {
   // The power, one hit at a time: std::pow has no lane form that gives its bits.
   for (int j = 0; j < n; ++j)
-    lobe_[j] = reaches_[j] & highlight_[j] & specular_[j] && cos_h_[j] > 0
+    lobe_[j] = (reaches_[j] & highlight_[j] & specular_[j]) != 0 && cos_h_[j] > 0
                    ? shaders::blinn_phong_lobe(ns_exp_[j], cos_h_[j])
                    : 0.0f;
   add_lanes(in(kd_), in(ks_), highlight_.data(), specular_.data(), in(irradiance_), cos_h_.data(),

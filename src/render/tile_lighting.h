@@ -19,18 +19,21 @@ namespace rayvec {
 
 class TileLighting {
  public:
-  TileLighting(const Scene& scene, const Accelerator& accel, const Whitted& whitted)
-      : scene_(scene), accel_(accel), whitted_(whitted) {}
+  TileLighting(const Scene& scene, const Accelerator& accel, const Whitted& whitted);
 
   // Lights the hits of rays[0 .. n): hits[j] is the nearest hit of rays[j].
   void light(const Ray* rays, const Hit* hits, int n);
 
   // Of hit j of the last light(): whether it is lit (Whitted::lit_surface); if so its surface
-  // point, its direct light and how many shadow rays it took.
+  // point and direct light, for Whitted::shade_primary. Whether it is also finished: its material
+  // is Whitted::local_only, and shade() would return radiance(j), the local term.
   bool lit(int j) const { return lit_[j] != 0; }
   const SurfacePoint& surface(int j) const { return surfaces_[j]; }
   Vec3f direct(int j) const { return sum_[j]; }
-  uint32_t shadow_rays(int j) const { return shadow_rays_[j]; }
+  bool finished(int j) const { return finished_[j] != 0; }
+  Vec3f radiance(int j) const { return radiance_[j]; }
+  // The shadow rays the last light() traced.
+  uint64_t shadow_rays() const { return shadow_rays_; }
 
  private:
   // The per-hit lanes of the lit hits (zeros elsewhere): point, normals, shadow-ray origin,
@@ -42,6 +45,8 @@ class TileLighting {
   void trace_shadows(const Light& light, int n);
   // What each reaching sample adds, into the sums.
   void add_reaching(int n);
+  // The local term of every hit, read for the finished ones.
+  void add_local(int n);
 
   // A Vec3f per hit as three float arrays, so that a loop over the hits runs in SIMD lanes.
   struct Vec3Lanes {
@@ -62,12 +67,13 @@ class TileLighting {
   const Scene& scene_;
   const Accelerator& accel_;
   const Whitted& whitted_;
+  std::vector<uint8_t> local_only_;  // per material: Whitted::local_only
   std::vector<SurfacePoint> surfaces_;
   // per hit
-  std::vector<int32_t> lit_, highlight_, specular_;
-  Vec3Lanes p_, ng_, ns_, origin_, to_eye_, kd_, ks_, sum_;
+  std::vector<int32_t> lit_, finished_, highlight_, specular_;
+  Vec3Lanes p_, ng_, ns_, origin_, to_eye_, kd_, ks_, ka_, ke_, sum_, radiance_;
   std::vector<float> ns_exp_;  // the material's Blinn–Phong exponent Ns
-  std::vector<uint32_t> shadow_rays_;
+  uint64_t shadow_rays_ = 0;
   // per hit, for the light at hand
   Vec3Lanes irradiance_;
   std::vector<float> cos_h_, lobe_;

@@ -73,7 +73,10 @@ void TileRenderer::render(const TileRect& rect, float* out) {
     const auto tb = std::chrono::steady_clock::now();
     primary_seconds += std::chrono::duration<double>(tb - ta).count();
     const bool together = !counting_;
-    if (together) lighting_.light(batch_.data(), hits_.data(), n);
+    if (together) {
+      lighting_.light(batch_.data(), hits_.data(), n);
+      rays.shadow += lighting_.shadow_rays();
+    }
     for (int j = 0; j < n; ++j) {
       const int i = block_order_[j];
       const Ray& ray = batch_[j];
@@ -81,9 +84,10 @@ void TileRenderer::render(const TileRect& rect, float* out) {
       const bool lit = together && lighting_.lit(j);
       rays.primary_hits += h.hit() ? 1 : 0;
       if (counting_) pixel_cost_.reset();
-      if (lit)
-        sum_[i] += whitted_.shade_primary(ray, h, lighting_.surface(j), lighting_.direct(j),
-                                          lighting_.shadow_rays(j), rays);
+      if (lit && lighting_.finished(j))
+        sum_[i] += lighting_.radiance(j);
+      else if (lit)
+        sum_[i] += whitted_.shade_primary(ray, h, lighting_.surface(j), lighting_.direct(j), rays);
       else
         sum_[i] += whitted_.shade(ray, h, 0, 1.0f, rays);
       if (counting_) {

@@ -77,10 +77,12 @@ bool Whitted::lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const
 }
 
 Vec3f Whitted::shade_primary(const Ray& ray, const Hit& hit, const SurfacePoint& s, Vec3f direct,
-                             uint32_t shadow_rays, RayCounts& rays) const {
-  const Precomputed lit{s, direct, shadow_rays};
+                             RayCounts& rays) const {
+  const Precomputed lit{s, direct};
   return shade_hit(ray, hit, 0, 1.0f, rays, &lit);
 }
+
+bool Whitted::local_only(const Material& m) { return !shaders::reflects(m) && !shaders::refracts(m); }
 
 Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays,
                          const Precomputed* lit) const {
@@ -101,12 +103,11 @@ Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight
 
   const Vec3f dir = normalize(ray.dir);
   Vec3f direct;
-  if (lit) {
+  if (lit)
     direct = lit->direct;
-    rays.shadow += lit->shadow_rays;
-  } else {
+  else
     direct = direct_light(s, m, diffuse_albedo(scene_, s), -dir, rays);
-  }
+  // TileLighting takes this sum for a local_only material: the same steps there
   Vec3f radiance = m.Ka * scene_.ambient + direct;
   if (shaders::refracts(m)) radiance *= m.d;  // dissolve: the local term's opacity over the refraction
   radiance += m.Ke;

@@ -31,10 +31,14 @@ class Whitted {
   bool lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const;
   bool shadows_on() const { return settings_.effects.shadows; }
   // A camera hit lit beforehand (render/tile_lighting.h), for a Whitted without an observer: the
-  // hit's lit_surface is s, its direct light (what its unblocked light samples add) `direct`, from
-  // `shadow_rays` shadow rays. The same radiance and ray counts as shade(ray, hit, 0, 1, rays).
+  // hit's lit_surface is s and its direct light (what its unblocked light samples add) `direct`.
+  // The same radiance and ray counts as shade(ray, hit, 0, 1, rays), less the shadow rays, which
+  // their tracer counts.
   Vec3f shade_primary(const Ray& ray, const Hit& hit, const SurfacePoint& s, Vec3f direct,
-                      uint32_t shadow_rays, RayCounts& rays) const;
+                      RayCounts& rays) const;
+  // Whether shade() of a lit hit on m is its local term alone, Ka·ambient + direct light + Ke: m
+  // spawns neither a mirror ray nor a refraction ray.
+  static bool local_only(const Material& m);
 
  private:
   Vec3f shade_observed(RayKind kind, Vec3f factor, const Ray& ray, const Hit& hit, int depth, float weight,
@@ -43,7 +47,6 @@ class Whitted {
   struct Precomputed {
     const SurfacePoint& s;
     Vec3f direct;
-    uint32_t shadow_rays;
   };
   Vec3f shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays,
                   const Precomputed* lit = nullptr) const;

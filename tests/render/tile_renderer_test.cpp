@@ -50,10 +50,11 @@ TEST(TileRenderer, TilesInAnyOrderMakeRendersImage) {
   EXPECT_EQ(rays.total(), stats.rays.total());
 }
 
-// A tile lights its camera hits together, light by light and lane by lane (TileLighting,
-// Whitted::shade_primary); each pixel must come out as Whitted::shade() lighting them one by one
-// makes it, bit for bit, with the same ray counts — with lights below the floor, without power and
-// directional, with many lights, and with shadows off.
+// A tile lights its camera hits together, light by light and lane by lane (TileLighting, then
+// Whitted::shade_primary, or the lanes' local term where the material spawns no ray); each pixel
+// must come out as Whitted::shade() lighting them one by one makes it, bit for bit, with the same
+// ray counts — with emission, lights below the floor, without power and directional, with many
+// lights, and with shadows off.
 TEST(TileRenderer, ShadowRaysTracedTogetherShadeAsOneByOne) {
   for (const char* name : {"whitted", "shadows", "cornell_box", "refraction"}) {
     for (const bool shadows : {true, false}) {
@@ -63,6 +64,8 @@ TEST(TileRenderer, ShadowRaysTracedTogetherShadeAsOneByOne) {
       scene.lights.push_back(Light{Light::Type::point, {0, -50, 0}, {0, -1, 0}, {30, 30, 30}});  // below
       scene.lights.push_back(Light{Light::Type::point, {0, 2, 0}, {0, -1, 0}, {0, 0, 0}});       // no power
       scene.lights.push_back(Light{Light::Type::directional, {}, {0.6f, -0.8f, 0}, {0.5f, 0.5f, 0.5f}});
+      for (std::size_t k = 0; k < scene.materials.size(); k += 2)  // emission in the local term's sum
+        scene.materials[k].Ke = {0.013f, 0.021f, 0.034f * float(k + 1)};
       if (std::string(name) == "refraction")
         while (scene.lights.size() <= 70)
           scene.lights.push_back(Light{Light::Type::point,
