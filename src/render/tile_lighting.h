@@ -45,8 +45,6 @@ class TileLighting {
   void trace_shadows(const Light& light, int n);
   // What each reaching sample adds, into the sums.
   void add_reaching(int n);
-  // The local term of every hit, read for the finished ones.
-  void add_local(int n);
 
   // A Vec3f per hit as three float arrays, so that a loop over the hits runs in SIMD lanes.
   struct Vec3Lanes {
