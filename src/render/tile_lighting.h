@@ -3,9 +3,11 @@
 // light sample (light_sample.h) is taken lane by lane over the tile, the shadow rays of the samples
 // that face their points go to the accelerator as one stream (Accelerator::occluded_stream:
 // packets where their signs agree), and what each unblocked sample adds (Lambert and Blinn–Phong)
-// is summed lane by lane. The lanes do Whitted::direct_light's arithmetic in its order, the lights
-// summed first to last, so Whitted::shade_primary given a hit's sum returns shade()'s bits; only the
-// power in Blinn–Phong's lobe is taken one hit at a time (benchmarks.md#decision-tile-lighting).
+// is summed lane by lane; last, each hit's local term (ambient + direct + emission), which is all
+// that shade() returns where the material spawns no ray. The lanes do Whitted's arithmetic in its
+// order, the lights summed first to last, so the local term, or Whitted::shade_primary given a
+// hit's sum, gives shade()'s bits; only the power in Blinn–Phong's lobe is taken one hit at a time
+// (benchmarks.md#decision-tile-lighting).
 #pragma once
 #include <cstdint>
 #include <vector>
