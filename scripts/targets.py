@@ -50,7 +50,7 @@ def log(message):
 
 
 def run(cmd, cwd=None):
-    """Runs cmd; returns (stdout, stderr, CPU seconds of the process, peak RSS in MB)."""
+    """Runs cmd; returns (stdout, stderr, CPU seconds of the process). Its peak RSS: peak_rss_mb."""
     with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
         proc = subprocess.Popen(cmd, stdout=out, stderr=err, cwd=cwd)
         _, status, usage = os.wait4(proc.pid, 0)
@@ -60,7 +60,18 @@ def run(cmd, cwd=None):
         stdout, stderr = out.read().decode(), err.read().decode()
     if proc.returncode != 0:
         sys.exit(f"targets: {' '.join(map(str, cmd))} exited with {proc.returncode}:\n{stderr[-2000:]}")
-    return stdout, stderr, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
+    return stdout, stderr, usage.ru_utime + usage.ru_stime
+
+
+def peak_rss_mb(cmd):
+    """cmd's peak RSS in MB, read by GNU time; None where /usr/bin/time is missing. Not wait4's
+    ru_maxrss: Python starts its children by vfork, and the kernel counts the parent's pages, the
+    resident set of this script, into the child's peak."""
+    if not os.path.exists("/usr/bin/time"):
+        return None
+    with tempfile.NamedTemporaryFile(mode="r") as kb:
+        run(["/usr/bin/time", "-f", "%M", "-o", kb.name] + cmd)
+        return int(kb.read().split()[-1]) / 1024
 
 
 def to_embree(run, ray_set):
@@ -138,7 +149,7 @@ class Targets:
             log(f"targets: hits --accel brute, round {r + 1} of {self.rounds}")
             if reference:
                 ref_cpu.append(run([reference, mesh, rays])[2])
-            _, err, b, _ = run([self.bin, "hits", "--mesh", mesh, "--rays", rays, "--accel", "brute",
+            _, err, b = run([self.bin, "hits", "--mesh", mesh, "--rays", rays, "--accel", "brute",
                                 "--threads", "1", "-o", self.path("hits.csv")])
             hits_cpu.append(b)
             traces.append(float(re.search(r"\(([\d.]+) s cpu\)", err).group(1)))
@@ -307,19 +318,20 @@ class Targets:
             pov = self.path(f"{name}.pov")
             run([sys.executable, f"{ROOT}/scripts/scene_to_pov.py", scene, pov])
             rv_png, pov_png = self.path(f"{name}_rayvec.png"), self.path(f"{name}_pov.png")
-            ours, theirs, rss = [], [], 0
+            ours, theirs = [], []
+            render = [self.bin, "render", scene, "--spp", "1", "--threads", "1", "-q", "-o", rv_png]
             for r in range(self.rounds):
                 log(f"targets: {name} against POV-Ray, round {r + 1} of {self.rounds}")
-                _, _, cpu, mb = run([self.bin, "render", scene, "--spp", "1", "--threads", "1", "-q", "-o", rv_png])
-                ours.append(cpu)
-                rss = max(rss, mb)
+                ours.append(run(render)[2])
                 theirs.append(run(["povray", f"+I{pov}", f"+O{pov_png}", f"+W{camera['width']}",
                                    f"+H{camera['height']}", "-A", "+WT1", "-D", "File_Gamma=sRGB"])[2])
             ratio = median(theirs) / median(ours)
             worst = ratio if worst is None else min(worst, ratio)
             rmse = re.search(r"^rmse: (\S+)", run([self.bin, "compare", rv_png, pov_png])[0], re.M).group(1)
+            rss = peak_rss_mb(render)
+            rss_text = f"rayvec {rss:.0f} MB" if rss is not None else "rayvec's RSS not read: apt install time"
             cells.append(f"{name} {median(ours) * 1000:.0f} / {median(theirs) * 1000:.0f} ms ({ratio:.1f}×, "
-                         f"RMSE {float(rmse):.3f}, rayvec {rss:.0f} MB)")
+                         f"RMSE {float(rmse):.3f}, {rss_text})")
         self.row("whole process against POV-Ray 3.7, one thread, every scene and the 1M sphere", "≥ 5×",
                  f"lowest {worst:.1f}×", worst >= 5)
         self.details.append(f"Whole process, rayvec / POV-Ray CPU, medians of {self.rounds} alternating runs: "
