@@ -5,8 +5,8 @@
 // packets where their signs agree), and what each unblocked sample adds (Lambert and Blinn–Phong)
 // is summed lane by lane; last, each hit's local term (ambient + direct + emission), which is all
 // that shade() returns where the material spawns no ray. The lanes do Whitted's arithmetic in its
-// order, the lights summed first to last, so the local term, or Whitted::shade_primary given a
-// hit's sum, gives shade()'s bits; only the power in Blinn–Phong's lobe is taken one hit at a time
+// order, the lights summed first to last, so the local term, or Whitted::bounce given a hit's
+// sum, gives shade()'s bits; only the power in Blinn–Phong's lobe is taken one hit at a time
 // (benchmarks.md#decision-tile-lighting).
 #pragma once
 #include <cstdint>
@@ -27,7 +27,7 @@ class TileLighting {
   void light(const Ray* rays, const Hit* hits, int n);
 
   // Of hit j of the last light(): whether it is lit (Whitted::lit_surface); if so its surface
-  // point and direct light, for Whitted::shade_primary. Whether it is also finished: its material
+  // point and direct light, for Whitted::bounce. Whether it is also finished: its material
   // is Whitted::local_only, and shade() would return radiance(j), the local term.
   bool lit(int j) const { return lit_[j] != 0; }
   const SurfacePoint& surface(int j) const { return surfaces_[j]; }

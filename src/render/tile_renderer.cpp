@@ -31,7 +31,8 @@ TileRenderer::TileRenderer(const Scene& scene, const Accelerator& accel, const R
       pixel_cost_(accel),
       whitted_(scene, accel, settings, counting_ ? &pixel_cost_ : nullptr, normals),
       samples_(settings.spp),
-      lighting_(scene, accel, whitted_) {}
+      lighting_(scene, accel, whitted_),
+      waves_(scene, accel, whitted_) {}
 
 void TileRenderer::render(const TileRect& rect, float* out) {
   const int w = rect.width(), n = rect.pixels(), spp = samples_.count();
@@ -76,6 +77,8 @@ void TileRenderer::render(const TileRect& rect, float* out) {
     if (together) {
       lighting_.light(batch_.data(), hits_.data(), n);
       rays.shadow += lighting_.shadow_rays();
+      radiance_.resize(std::size_t(n));
+      waves_.shade(batch_.data(), hits_.data(), n, lighting_, radiance_.data(), rays);
     }
     for (int j = 0; j < n; ++j) {
       const int i = block_order_[j];
@@ -84,10 +87,8 @@ void TileRenderer::render(const TileRect& rect, float* out) {
       const bool lit = together && lighting_.lit(j);
       rays.primary_hits += h.hit() ? 1 : 0;
       if (counting_) pixel_cost_.reset();
-      if (lit && lighting_.finished(j))
-        sum_[i] += lighting_.radiance(j);
-      else if (lit)
-        sum_[i] += whitted_.shade_primary(ray, h, lighting_.surface(j), lighting_.direct(j), rays);
+      if (together)
+        sum_[i] += radiance_[std::size_t(j)];
       else
         sum_[i] += whitted_.shade(ray, h, 0, 1.0f, rays);
       if (counting_) {

@@ -12,6 +12,7 @@
 #include "render/pixel_samples.h"
 #include "render/render_stats.h"
 #include "render/tile_lighting.h"
+#include "render/tile_waves.h"
 #include "render/whitted.h"
 #include "scene/scene.h"
 
@@ -74,9 +75,11 @@ class TileRenderer {
   std::vector<float> pixel_x_, pixel_y_, sample_x_, sample_y_;  // pixel corners, sample positions
   std::vector<Ray> batch_;
   std::vector<Hit> hits_;
-  // The camera hits' direct light, computed together; renders that count each pixel's rays (an
-  // observer) shade them one by one instead.
+  // The camera hits' direct light, computed together, and their ray trees shaded generation by
+  // generation; renders that count each pixel's rays (an observer) shade them one by one instead.
   TileLighting lighting_;
+  TileWaves waves_;
+  std::vector<Vec3f> radiance_;  // in block order
   std::vector<Vec3f> sum_;
   std::vector<TraversalCost> costs_;
   std::vector<int> bounces_;

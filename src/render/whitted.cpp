@@ -76,42 +76,18 @@ bool Whitted::lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const
   return shaders::is_lit(shaders::shading_model(scene_.materials[scene_.triangle_material[hit.tri]]));
 }
 
-Vec3f Whitted::shade_primary(const Ray& ray, const Hit& hit, const SurfacePoint& s, Vec3f direct,
-                             RayCounts& rays) const {
-  const Precomputed lit{s, direct};
-  return shade_hit(ray, hit, 0, 1.0f, rays, &lit);
-}
-
 bool Whitted::local_only(const Material& m) { return !shaders::reflects(m) && !shaders::refracts(m); }
 
-Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays,
-                         const Precomputed* lit) const {
-  if (!hit.hit()) {
-    if (observer_) observer_->local(scene_.background);
-    return scene_.background;
-  }
-  SurfacePoint computed;
-  if (!lit) surface_point(scene_, ray, hit, normals_, computed);
-  const SurfacePoint& s = lit ? lit->s : computed;
+Whitted::Bounce Whitted::bounce(const Ray& ray, const SurfacePoint& s, Vec3f direct, int depth,
+                                float weight) const {
   const Material& m = scene_.materials[s.material];
   const shaders::ShadingModel model = shaders::shading_model(m);
-  if (!shaders::is_lit(model)) {  // constant colour, no lighting
-    const Vec3f kd = diffuse_albedo(scene_, s);
-    if (observer_) observer_->local(m.Ke + kd);
-    return m.Ke + kd;
-  }
-
+  Bounce b;
   const Vec3f dir = normalize(ray.dir);
-  Vec3f direct;
-  if (lit)
-    direct = lit->direct;
-  else
-    direct = direct_light(s, m, diffuse_albedo(scene_, s), -dir, rays);
   // TileLighting takes this sum for a local_only material: the same steps there
-  Vec3f radiance = m.Ka * scene_.ambient + direct;
-  if (shaders::refracts(m)) radiance *= m.d;  // dissolve: the local term's opacity over the refraction
-  radiance += m.Ke;
-  if (observer_) observer_->local(radiance);
+  b.local = m.Ka * scene_.ambient + direct;
+  if (shaders::refracts(m)) b.local *= m.d;  // dissolve: the local term's opacity over the refraction
+  b.local += m.Ke;
 
   // Fresnel reflectance for the Fresnel models: n1 on the incoming side, n2 beyond.
   const float n1 = s.entering ? 1.0f : m.Ni, n2 = s.entering ? m.Ni : 1.0f;
@@ -119,45 +95,82 @@ Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight
       shaders::uses_fresnel(model) ? shaders::fresnel_dielectric(-dot(dir, s.ns), n1, n2) : 1.0f;
 
   if (shaders::reflects(m)) {
-    const Vec3f kr = shaders::reflection_weight(m, fresnel);
-    const float w = weight * max_component(kr);
+    ChildRay& c = b.reflection;
+    c.k = shaders::reflection_weight(m, fresnel);
+    c.weight = weight * max_component(c.k);
     if (!settings_.effects.reflection) {
-      if (observer_) observer_->skipped(RayKind::reflection, SkipReason::effect_off, w);
-    } else if (child_worthwhile(depth, w)) {
+      c.state = Child::effect_off;
+    } else if (child_worthwhile(depth, c.weight)) {
       Vec3f r = shaders::mirror_direction(dir, s.ns);
       if (!(dot(r, s.ng) > 0)) r = shaders::mirror_direction(dir, s.ng);  // shading normal too bent
-      ++rays.reflection;
-      radiance += kr * trace(RayKind::reflection, kr, Ray{offset_ray_origin(s.p, s.ng), r, 0.0f, kInf},
-                             depth + 1, w, rays);
+      c.state = Child::traced;
+      c.ray = Ray{offset_ray_origin(s.p, s.ng), r, 0.0f, kInf};
     } else {
-      skip(RayKind::reflection, depth, w);
+      c.state = Child::cutoff;
     }
   }
   if (shaders::refracts(m)) {
-    const Vec3f kt = shaders::transmission_weight(m, fresnel);
-    const float w = weight * max_component(kt);
+    ChildRay& c = b.refraction;
+    c.k = shaders::transmission_weight(m, fresnel);
+    c.weight = weight * max_component(c.k);
     if (!settings_.effects.refraction) {
-      if (observer_) observer_->skipped(RayKind::refraction, SkipReason::effect_off, w);
-    } else if (child_worthwhile(depth, w)) {
+      c.state = Child::effect_off;
+    } else if (child_worthwhile(depth, c.weight)) {
       std::optional<Vec3f> t = shaders::refract_direction(dir, s.ns, n1 / n2);
       if (t && !(dot(*t, s.ng) < 0)) t = shaders::refract_direction(dir, s.ng, n1 / n2);
-      if (t) {  // none under total internal reflection: the Fresnel reflection carries it all
-        ++rays.refraction;
-        radiance += kt * trace(RayKind::refraction, kt, Ray{offset_ray_origin(s.p, -s.ng), *t, 0.0f, kInf},
-                               depth + 1, w, rays);
-      } else if (observer_) {
-        observer_->skipped(RayKind::refraction, SkipReason::total_internal_reflection, w);
+      if (t) {
+        c.state = Child::traced;
+        c.ray = Ray{offset_ray_origin(s.p, -s.ng), *t, 0.0f, kInf};
+      } else {  // no refracted direction: the Fresnel reflection carries it all
+        c.state = Child::total_internal_reflection;
       }
-    } else if (observer_) {
-      // Beyond the critical angle the Fresnel reflectance is 1, so the refraction weighs 0: name
-      // the cause, not the cutoff.
-      const bool tir = !shaders::refract_direction(dir, s.ns, n1 / n2);
-      if (tir && depth + 1 <= settings_.max_depth)
-        observer_->skipped(RayKind::refraction, SkipReason::total_internal_reflection, w);
-      else
-        skip(RayKind::refraction, depth, w);
+    } else {
+      c.state = Child::cutoff;
+      // Beyond the critical angle the Fresnel reflectance is 1, so the refraction weighs 0: an
+      // observer is told the cause, not the cutoff.
+      if (observer_ && depth + 1 <= settings_.max_depth && !shaders::refract_direction(dir, s.ns, n1 / n2))
+        c.state = Child::total_internal_reflection;
     }
   }
+  return b;
+}
+
+void Whitted::follow(RayKind kind, const ChildRay& c, int depth, Vec3f& radiance, RayCounts& rays) const {
+  switch (c.state) {
+    case Child::none: break;
+    case Child::traced:
+      ++(kind == RayKind::reflection ? rays.reflection : rays.refraction);
+      radiance += c.k * trace(kind, c.k, c.ray, depth + 1, c.weight, rays);
+      break;
+    case Child::effect_off:
+      if (observer_) observer_->skipped(kind, SkipReason::effect_off, c.weight);
+      break;
+    case Child::cutoff: skip(kind, depth, c.weight); break;
+    case Child::total_internal_reflection:
+      if (observer_) observer_->skipped(kind, SkipReason::total_internal_reflection, c.weight);
+      break;
+  }
+}
+
+Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const {
+  if (!hit.hit()) {
+    if (observer_) observer_->local(scene_.background);
+    return scene_.background;
+  }
+  SurfacePoint s;
+  surface_point(scene_, ray, hit, normals_, s);
+  const Material& m = scene_.materials[s.material];
+  if (!shaders::is_lit(shaders::shading_model(m))) {  // constant colour, no lighting
+    const Vec3f kd = diffuse_albedo(scene_, s);
+    if (observer_) observer_->local(m.Ke + kd);
+    return m.Ke + kd;
+  }
+  const Vec3f direct = direct_light(s, m, diffuse_albedo(scene_, s), -normalize(ray.dir), rays);
+  const Bounce b = bounce(ray, s, direct, depth, weight);
+  if (observer_) observer_->local(b.local);
+  Vec3f radiance = b.local;
+  follow(RayKind::reflection, b.reflection, depth, radiance, rays);
+  follow(RayKind::refraction, b.refraction, depth, radiance, rays);
   return radiance;
 }
 

@@ -30,28 +30,39 @@ class Whitted {
   // unlit material, where shade() computes no direct light.
   bool lit_surface(const Ray& ray, const Hit& hit, SurfacePoint& s) const;
   bool shadows_on() const { return settings_.effects.shadows; }
-  // A camera hit lit beforehand (render/tile_lighting.h), for a Whitted without an observer: the
-  // hit's lit_surface is s and its direct light (what its unblocked light samples add) `direct`.
-  // The same radiance and ray counts as shade(ray, hit, 0, 1, rays), less the shadow rays, which
-  // their tracer counts.
-  Vec3f shade_primary(const Ray& ray, const Hit& hit, const SurfacePoint& s, Vec3f direct,
-                      RayCounts& rays) const;
   // Whether shade() of a lit hit on m is its local term alone, Ka·ambient + direct light + Ke: m
   // spawns neither a mirror ray nor a refraction ray.
   static bool local_only(const Material& m);
 
+  // What shade() makes of one child ray of a lit hit: traced (into `ray`, with coefficient k and
+  // weight), or why not. `none`: the material has no such child.
+  enum class Child : uint8_t { none, traced, effect_off, cutoff, total_internal_reflection };
+  struct ChildRay {
+    Child state = Child::none;
+    float weight = 0;  // the child's contribution to the pixel (for a skipped one: what it would carry)
+    Vec3f k;           // kr or kt: the child's radiance is multiplied by it
+    Ray ray;           // where state is traced
+  };
+  // A lit hit's local term (Ka·ambient + direct, times the dissolve where it refracts, + Ke) and
+  // its children. shade() returns local + reflection.k·L(reflection) + refraction.k·L(refraction),
+  // summed in that order, over the traced children (render/tile_waves.h sums them so too).
+  struct Bounce {
+    Vec3f local;
+    ChildRay reflection, refraction;
+  };
+  // The bounce of a lit hit (lit_surface gave s) reached by `ray` at `depth` carrying `weight`,
+  // whose direct light is `direct`.
+  Bounce bounce(const Ray& ray, const SurfacePoint& s, Vec3f direct, int depth, float weight) const;
+
  private:
   Vec3f shade_observed(RayKind kind, Vec3f factor, const Ray& ray, const Hit& hit, int depth, float weight,
                        RayCounts& rays) const;
-  // `lit` (if not null): the hit's surface point and direct light, as shade_primary's.
-  struct Precomputed {
-    const SurfacePoint& s;
-    Vec3f direct;
-  };
-  Vec3f shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays,
-                  const Precomputed* lit = nullptr) const;
+  Vec3f shade_hit(const Ray& ray, const Hit& hit, int depth, float weight, RayCounts& rays) const;
   Vec3f trace(RayKind kind, Vec3f factor, const Ray& ray, int depth, float weight, RayCounts& rays) const;
   void skip(RayKind kind, int depth, float weight) const;
+  // Child c of a hit at `depth`: traced and its radiance times c.k added to `radiance`, or its
+  // skipping told to the observer.
+  void follow(RayKind kind, const ChildRay& c, int depth, Vec3f& radiance, RayCounts& rays) const;
   Vec3f direct_light(const SurfacePoint& s, const Material& m, Vec3f kd, Vec3f to_eye, RayCounts& rays) const;
   bool child_worthwhile(int depth, float weight) const;
 

@@ -1,0 +1,67 @@
+// TileWaves: shades a tile's camera hits generation by generation instead of ray by ray. The camera
+// hits are generation 0; the mirror and refraction rays they spawn (Whitted::bounce) make the next
+// generation, traced as one stream (Accelerator::closest_group: packets where the rays run
+// together) and lit together (TileLighting: shadow rays as streams, shading in SIMD lanes); and so on
+// until no hit spawns a ray. Each hit keeps its local term, its children's coefficients and where
+// its children lie in the next generation; last, from the deepest generation up, each hit adds
+// its children's radiance to its local term — reflection first, then refraction, as shade() adds
+// them — so every pixel gets the bits that Whitted::shade() gives it ray by ray
+// (benchmarks.md#decision-tile-waves).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "accel/accelerator.h"
+#include "render/render_stats.h"
+#include "render/tile_lighting.h"
+#include "render/whitted.h"
+#include "scene/scene.h"
+
+namespace rayvec {
+
+class TileWaves {
+ public:
+  // shade() needs a `whitted` without an observer: an observer follows each ray tree depth first.
+  TileWaves(const Scene& scene, const Accelerator& accel, const Whitted& whitted);
+
+  // out[j] = whitted.shade(rays[j], hits[j], 0, 1, counts) for the n camera rays of a tile, whose
+  // hits `camera` has lit (TileLighting::light(rays, hits, n)); their shadow rays are not counted
+  // here, the secondary rays and their shadow rays are.
+  void shade(const Ray* rays, const Hit* hits, int n, const TileLighting& camera, Vec3f* out,
+             RayCounts& counts);
+
+ private:
+  // One hit of a generation: its radiance (the local term until the children are added), and its
+  // children's coefficients and indices in the next generation (-1: none traced).
+  struct Node {
+    Vec3f radiance;
+    Vec3f kr, kt;
+    int32_t reflection = -1, refraction = -1;
+  };
+  // The next generation's rays as they are spawned, reflections and refractions apart (each
+  // kind's rays run together), and the weight each carries.
+  struct Spawned {
+    std::vector<Ray> rays;
+    std::vector<float> weights;
+    void clear() {
+      rays.clear();
+      weights.clear();
+    }
+  };
+  // Node j of generation `depth` from its ray, its hit and their lighting; its traced children
+  // appended to the spawned lists.
+  void expand(const Ray& ray, const Hit& hit, const TileLighting& lighting, int j, int depth, float weight,
+              Node& node, RayCounts& counts);
+
+  const Scene& scene_;
+  const Accelerator& accel_;
+  const Whitted& whitted_;
+  TileLighting lighting_;  // the secondary generations' (the camera hits' stays with the caller)
+  std::vector<std::vector<Node>> nodes_;  // per generation
+  Spawned reflections_, refractions_;
+  std::vector<Ray> rays_;  // the generation at hand
+  std::vector<Hit> hits_;
+  std::vector<float> weights_;
+};
+
+}  // namespace rayvec
