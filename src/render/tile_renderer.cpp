@@ -87,7 +87,9 @@ void TileRenderer::render(const TileRect& rect, float* out) {
       const bool lit = together && lighting_.lit(j);
       rays.primary_hits += h.hit() ? 1 : 0;
       if (counting_) pixel_cost_.reset();
-      if (together)
+      if (lit && lighting_.finished(j))
+        sum_[i] += lighting_.radiance(j);
+      else if (lit)
         sum_[i] += radiance_[std::size_t(j)];
       else
         sum_[i] += whitted_.shade(ray, h, 0, 1.0f, rays);

@@ -35,21 +35,28 @@ void TileWaves::expand(const Ray& ray, const Hit& hit, const TileLighting& light
 
 void TileWaves::shade(const Ray* rays, const Hit* hits, int n, const TileLighting& camera, Vec3f* out,
                       RayCounts& counts) {
+  // generation 0: the camera hits that spawn a ray (lit, not finished); the others are the caller's
+  roots_.clear();
+  for (int j = 0; j < n; ++j)
+    if (camera.lit(j) && !camera.finished(j)) roots_.push_back(j);
+  if (roots_.empty()) return;
   int depth = 0;
   for (;;) {
     if (nodes_.size() <= std::size_t(depth)) nodes_.emplace_back();
     std::vector<Node>& nodes = nodes_[std::size_t(depth)];
     const bool first = depth == 0;
-    const int m = first ? n : int(rays_.size());
+    const int m = int(first ? roots_.size() : rays_.size());
     nodes.assign(std::size_t(m), Node{});
     reflections_.clear();
     refractions_.clear();
     for (int j = 0; j < m; ++j) {
-      if (first)
-        expand(rays[j], hits[j], camera, j, 0, 1.0f, nodes[std::size_t(j)], counts);
-      else
+      if (first) {
+        const int r = roots_[std::size_t(j)];
+        expand(rays[r], hits[r], camera, r, 0, 1.0f, nodes[std::size_t(j)], counts);
+      } else {
         expand(rays_[std::size_t(j)], hits_[std::size_t(j)], lighting_, j, depth, weights_[std::size_t(j)],
                nodes[std::size_t(j)], counts);
+      }
     }
     // the next generation: the reflections, then the refractions
     const int32_t reflected = int32_t(reflections_.rays.size());
@@ -76,7 +83,7 @@ void TileWaves::shade(const Ray* rays, const Hit* hits, int n, const TileLightin
       if (node.refraction >= 0) node.radiance += node.kt * below[std::size_t(node.refraction)].radiance;
     }
   }
-  for (int j = 0; j < n; ++j) out[j] = nodes_[0][std::size_t(j)].radiance;
+  for (std::size_t k = 0; k < roots_.size(); ++k) out[roots_[k]] = nodes_[0][k].radiance;
 }
 
 }  // namespace rayvec

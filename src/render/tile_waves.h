@@ -24,9 +24,10 @@ class TileWaves {
   // shade() needs a `whitted` without an observer: an observer follows each ray tree depth first.
   TileWaves(const Scene& scene, const Accelerator& accel, const Whitted& whitted);
 
-  // out[j] = whitted.shade(rays[j], hits[j], 0, 1, counts) for the n camera rays of a tile, whose
-  // hits `camera` has lit (TileLighting::light(rays, hits, n)); their shadow rays are not counted
-  // here, the secondary rays and their shadow rays are.
+  // out[j] = whitted.shade(rays[j], hits[j], 0, 1, counts) for each camera ray of a tile (rays[0 .. n),
+  // whose hits `camera` has lit: TileLighting::light(rays, hits, n)) whose hit spawns a ray —
+  // camera.lit(j) and not camera.finished(j); out[j] of the others is left as it is. Counts the
+  // secondary rays and their shadow rays (the camera hits' shadow rays are the caller's).
   void shade(const Ray* rays, const Hit* hits, int n, const TileLighting& camera, Vec3f* out,
              RayCounts& counts);
 
@@ -56,7 +57,8 @@ class TileWaves {
   const Scene& scene_;
   const Accelerator& accel_;
   const Whitted& whitted_;
-  TileLighting lighting_;  // the secondary generations' (the camera hits' stays with the caller)
+  TileLighting lighting_;   // the secondary generations' (the camera hits' stays with the caller)
+  std::vector<int> roots_;  // generation 0's camera rays
   std::vector<std::vector<Node>> nodes_;  // per generation
   Spawned reflections_, refractions_;
   std::vector<Ray> rays_;  // the generation at hand
