@@ -2,8 +2,13 @@
 
 namespace rayvec {
 
-TileWaves::TileWaves(const Scene& scene, const Accelerator& accel, const Whitted& whitted)
-    : scene_(scene), accel_(accel), whitted_(whitted), lighting_(scene, accel, whitted) {}
+TileWaves::TileWaves(const Scene& scene, const Accelerator& accel, const Whitted& whitted,
+                     std::size_t max_wave_rays)
+    : scene_(scene),
+      accel_(accel),
+      whitted_(whitted),
+      max_wave_rays_(max_wave_rays),
+      lighting_(scene, accel, whitted) {}
 
 void TileWaves::expand(const Ray& ray, const Hit& hit, const TileLighting& lighting, int j, int depth,
                        float weight, Node& node, RayCounts& counts) {
@@ -16,6 +21,10 @@ void TileWaves::expand(const Ray& ray, const Hit& hit, const TileLighting& light
     return;
   }
   const Whitted::Bounce b = whitted_.bounce(ray, lighting.surface(j), lighting.direct(j), depth, weight);
+  if (reflections_.rays.size() + refractions_.rays.size() + 2 > max_wave_rays_) {
+    node.radiance = whitted_.finish(b, depth, counts);  // a full generation: this tree one ray at a time
+    return;
+  }
   node.radiance = b.local;
   if (b.reflection.state == Whitted::Child::traced) {
     node.kr = b.reflection.k;

@@ -8,6 +8,7 @@
 // them — so every pixel gets the bits that Whitted::shade() gives it ray by ray
 // (benchmarks.md#decision-tile-waves).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,10 +20,17 @@
 
 namespace rayvec {
 
+// The most rays a generation holds. Trees that would grow a generation past it (glass at a deep
+// depth limit with no contribution cutoff doubles its rays at every depth) go on one ray at a
+// time, recursively, from the hit that would have passed it: the same bits, memory bounded.
+inline constexpr std::size_t kMaxWaveRays = 8192;
+
 class TileWaves {
  public:
   // shade() needs a `whitted` without an observer: an observer follows each ray tree depth first.
-  TileWaves(const Scene& scene, const Accelerator& accel, const Whitted& whitted);
+  // `max_wave_rays`: the most rays a generation holds (tests set it low).
+  TileWaves(const Scene& scene, const Accelerator& accel, const Whitted& whitted,
+            std::size_t max_wave_rays = kMaxWaveRays);
 
   // out[j] = whitted.shade(rays[j], hits[j], 0, 1, counts) for each camera ray of a tile (rays[0 .. n),
   // whose hits `camera` has lit: TileLighting::light(rays, hits, n)) whose hit spawns a ray —
@@ -57,6 +65,7 @@ class TileWaves {
   const Scene& scene_;
   const Accelerator& accel_;
   const Whitted& whitted_;
+  const std::size_t max_wave_rays_;
   TileLighting lighting_;   // the secondary generations' (the camera hits' stays with the caller)
   std::vector<int> roots_;  // generation 0's camera rays
   std::vector<std::vector<Node>> nodes_;  // per generation

@@ -168,6 +168,10 @@ Vec3f Whitted::shade_hit(const Ray& ray, const Hit& hit, int depth, float weight
   const Vec3f direct = direct_light(s, m, diffuse_albedo(scene_, s), -normalize(ray.dir), rays);
   const Bounce b = bounce(ray, s, direct, depth, weight);
   if (observer_) observer_->local(b.local);
+  return finish(b, depth, rays);
+}
+
+Vec3f Whitted::finish(const Bounce& b, int depth, RayCounts& rays) const {
   Vec3f radiance = b.local;
   follow(RayKind::reflection, b.reflection, depth, radiance, rays);
   follow(RayKind::refraction, b.refraction, depth, radiance, rays);

@@ -53,6 +53,9 @@ class Whitted {
   // The bounce of a lit hit (lit_surface gave s) reached by `ray` at `depth` carrying `weight`,
   // whose direct light is `direct`.
   Bounce bounce(const Ray& ray, const SurfacePoint& s, Vec3f direct, int depth, float weight) const;
+  // What shade() returns for a hit at `depth` whose bounce is b: its children traced one ray at a
+  // time, recursively, their radiance added to b.local.
+  Vec3f finish(const Bounce& b, int depth, RayCounts& rays) const;
 
  private:
   Vec3f shade_observed(RayKind kind, Vec3f factor, const Ray& ray, const Hit& hit, int depth, float weight,
