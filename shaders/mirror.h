@@ -6,6 +6,6 @@ namespace rayvec::shaders {
 
 // Reflects direction `d` (travelling toward the surface) about unit normal `n`: d − 2(d·n)n.
 // Works for either orientation of n; |result| = |d|.
-Vec3f mirror_direction(Vec3f d, Vec3f n);
+inline Vec3f mirror_direction(Vec3f d, Vec3f n) { return d - n * (2.0f * dot(d, n)); }
 
 }  // namespace rayvec::shaders

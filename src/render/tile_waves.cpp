@@ -1,5 +1,7 @@
 #include "render/tile_waves.h"
 
+#include "shaders/shading_model.h"
+
 namespace rayvec {
 
 TileWaves::TileWaves(const Scene& scene, const Accelerator& accel, const Whitted& whitted,
@@ -8,9 +10,102 @@ TileWaves::TileWaves(const Scene& scene, const Accelerator& accel, const Whitted
       accel_(accel),
       whitted_(whitted),
       max_wave_rays_(max_wave_rays),
-      lighting_(scene, accel, whitted) {}
+      lighting_(scene, accel, whitted) {
+  for (const Material& m : scene.materials) {
+    ni_.push_back(m.Ni);
+    fresnel_model_.push_back(shaders::uses_fresnel(m));
+  }
+}
 
-void TileWaves::expand(const Ray& ray, const Hit& hit, const TileLighting& lighting, int j, int depth,
+namespace {
+
+// The loop over a generation's nodes reads and writes distinct arrays: restrict pointers tell the
+// compiler so, and it runs the loop in SIMD lanes.
+struct In3 {
+  const float* __restrict x;
+  const float* __restrict y;
+  const float* __restrict z;
+  Vec3f operator[](int k) const { return {x[k], y[k], z[k]}; }
+};
+struct Out3 {
+  float* __restrict x;
+  float* __restrict y;
+  float* __restrict z;
+  void set(int k, Vec3f v) const {
+    x[k] = v.x;
+    y[k] = v.y;
+    z[k] = v.z;
+  }
+};
+
+void directions_lanes(In3 ray_dir, In3 ns, In3 ng, const int32_t* __restrict entering,
+                      const float* __restrict ni, const int32_t* __restrict fresnel_model, Out3 dir,
+                      Out3 mirror, Out3 refracted, float* __restrict fresnel, int32_t* __restrict refracts,
+                      int m) {
+  for (int k = 0; k < m; ++k) {
+    const BounceDirections b =
+        bounce_directions(ray_dir[k], ns[k], ng[k], entering[k] != 0, ni[k], fresnel_model[k] != 0);
+    dir.set(k, b.dir);
+    mirror.set(k, b.mirror);
+    refracted.set(k, b.refracted);
+    fresnel[k] = b.fresnel;
+    refracts[k] = b.refracts;
+  }
+}
+
+}  // namespace
+
+void TileWaves::directions(const Ray* rays, const int* index, const TileLighting& lighting, int m) {
+  const std::size_t n = std::size_t(m);
+  for (Vec3Lanes* v : {&ray_dir_, &ns_, &ng_, &dir_, &mirror_, &refracted_}) v->resize(n);
+  for (auto* v : {&entering_, &node_fresnel_model_, &refracts_}) v->resize(n);
+  node_ni_.resize(n);
+  fresnel_.resize(n);
+  for (int k = 0; k < m; ++k) {
+    const int j = index ? index[k] : k;
+    Vec3f d{0, 0, -1}, ns{0, 0, 1}, ng{0, 0, 1};  // a placeholder for the nodes that spawn nothing
+    bool entering = true;
+    float ni = 1.0f;
+    int32_t fresnel_model = 0;
+    if (lighting.lit(j) && !lighting.finished(j)) {
+      const SurfacePoint& s = lighting.surface(j);
+      d = rays[j].dir;
+      ns = s.ns;
+      ng = s.ng;
+      entering = s.entering;
+      ni = ni_[std::size_t(s.material)];
+      fresnel_model = fresnel_model_[std::size_t(s.material)];
+    }
+    ray_dir_.x[k] = d.x;
+    ray_dir_.y[k] = d.y;
+    ray_dir_.z[k] = d.z;
+    ns_.x[k] = ns.x;
+    ns_.y[k] = ns.y;
+    ns_.z[k] = ns.z;
+    ng_.x[k] = ng.x;
+    ng_.y[k] = ng.y;
+    ng_.z[k] = ng.z;
+    entering_[k] = entering;
+    node_ni_[k] = ni;
+    node_fresnel_model_[k] = fresnel_model;
+  }
+  auto in = [](const Vec3Lanes& v) { return In3{v.x.data(), v.y.data(), v.z.data()}; };
+  auto out = [](Vec3Lanes& v) { return Out3{v.x.data(), v.y.data(), v.z.data()}; };
+  directions_lanes(in(ray_dir_), in(ns_), in(ng_), entering_.data(), node_ni_.data(),
+                   node_fresnel_model_.data(), out(dir_), out(mirror_), out(refracted_), fresnel_.data(),
+                   refracts_.data(), m);
+}
+
+BounceDirections TileWaves::direction(int k) const {
+  const std::size_t i = std::size_t(k);
+  return {{dir_.x[i], dir_.y[i], dir_.z[i]},
+          fresnel_[i],
+          {mirror_.x[i], mirror_.y[i], mirror_.z[i]},
+          {refracted_.x[i], refracted_.y[i], refracted_.z[i]},
+          refracts_[i] != 0};
+}
+
+void TileWaves::expand(const Ray& ray, const Hit& hit, const TileLighting& lighting, int j, int k, int depth,
                        float weight, Node& node, RayCounts& counts) {
   if (!lighting.lit(j)) {  // a miss or an unlit material: shade() spawns nothing there
     node.radiance = whitted_.shade(ray, hit, depth, weight, counts);
@@ -20,7 +115,8 @@ void TileWaves::expand(const Ray& ray, const Hit& hit, const TileLighting& light
     node.radiance = lighting.radiance(j);
     return;
   }
-  const Whitted::Bounce b = whitted_.bounce(ray, lighting.surface(j), lighting.direct(j), depth, weight);
+  const Whitted::Bounce b =
+      whitted_.bounce(lighting.surface(j), lighting.direct(j), depth, weight, direction(k));
   if (reflections_.rays.size() + refractions_.rays.size() + 2 > max_wave_rays_) {
     node.radiance = whitted_.finish(b, depth, counts);  // a full generation: this tree one ray at a time
     return;
@@ -58,12 +154,16 @@ void TileWaves::shade(const Ray* rays, const Hit* hits, int n, const TileLightin
     nodes.assign(std::size_t(m), Node{});
     reflections_.clear();
     refractions_.clear();
+    if (first)
+      directions(rays, roots_.data(), camera, m);
+    else
+      directions(rays_.data(), nullptr, lighting_, m);
     for (int j = 0; j < m; ++j) {
       if (first) {
         const int r = roots_[std::size_t(j)];
-        expand(rays[r], hits[r], camera, r, 0, 1.0f, nodes[std::size_t(j)], counts);
+        expand(rays[r], hits[r], camera, r, j, 0, 1.0f, nodes[std::size_t(j)], counts);
       } else {
-        expand(rays_[std::size_t(j)], hits_[std::size_t(j)], lighting_, j, depth, weights_[std::size_t(j)],
+        expand(rays_[std::size_t(j)], hits_[std::size_t(j)], lighting_, j, j, depth, weights_[std::size_t(j)],
                nodes[std::size_t(j)], counts);
       }
     }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "accel/accelerator.h"
+#include "render/bounce_directions.h"
 #include "render/render_stats.h"
 #include "render/tile_lighting.h"
 #include "render/whitted.h"
@@ -57,10 +58,25 @@ class TileWaves {
       weights.clear();
     }
   };
-  // Node j of generation `depth` from its ray, its hit and their lighting; its traced children
-  // appended to the spawned lists.
-  void expand(const Ray& ray, const Hit& hit, const TileLighting& lighting, int j, int depth, float weight,
-              Node& node, RayCounts& counts);
+  // Node k of generation `depth` from its ray, its hit, their lighting (hit j of `lighting`) and
+  // its bounce directions; its traced children appended to the spawned lists.
+  void expand(const Ray& ray, const Hit& hit, const TileLighting& lighting, int j, int k, int depth,
+              float weight, Node& node, RayCounts& counts);
+  // The bounce directions of the m nodes of a generation, in SIMD lanes: node k is ray rays[j] and
+  // hit j of `lighting`, j = index[k] (index null: j = k). Nodes that spawn nothing get a
+  // placeholder.
+  void directions(const Ray* rays, const int* index, const TileLighting& lighting, int m);
+  BounceDirections direction(int k) const;
+
+  // A Vec3f per node as three float arrays (the lanes' layout).
+  struct Vec3Lanes {
+    std::vector<float> x, y, z;
+    void resize(std::size_t n) {
+      x.resize(n);
+      y.resize(n);
+      z.resize(n);
+    }
+  };
 
   const Scene& scene_;
   const Accelerator& accel_;
@@ -73,6 +89,16 @@ class TileWaves {
   std::vector<Ray> rays_;  // the generation at hand
   std::vector<Hit> hits_;
   std::vector<float> weights_;
+  // per material: bounce_directions' index and Fresnel flag
+  std::vector<float> ni_;
+  std::vector<int32_t> fresnel_model_;
+  // per node of the generation at hand: bounce_directions' inputs, then its outputs
+  Vec3Lanes ray_dir_, ns_, ng_;
+  std::vector<int32_t> entering_, node_fresnel_model_;
+  std::vector<float> node_ni_;
+  Vec3Lanes dir_, mirror_, refracted_;
+  std::vector<float> fresnel_;
+  std::vector<int32_t> refracts_;
 };
 
 }  // namespace rayvec

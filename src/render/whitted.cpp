@@ -2,13 +2,12 @@
 
 #include <cmath>
 
+#include "render/bounce_directions.h"
 #include "render/light_sample.h"
 #include "render/offset_ray.h"
 #include "shaders/blinn_phong.h"
 #include "shaders/dielectric.h"
-#include "shaders/fresnel.h"
 #include "shaders/lambert.h"
-#include "shaders/mirror.h"
 #include "shaders/shading_model.h"
 
 namespace rayvec {
@@ -81,46 +80,42 @@ bool Whitted::local_only(const Material& m) { return !shaders::reflects(m) && !s
 Whitted::Bounce Whitted::bounce(const Ray& ray, const SurfacePoint& s, Vec3f direct, int depth,
                                 float weight) const {
   const Material& m = scene_.materials[s.material];
-  const shaders::ShadingModel model = shaders::shading_model(m);
+  return bounce(s, direct, depth, weight,
+                bounce_directions(ray.dir, s.ns, s.ng, s.entering, m.Ni, shaders::uses_fresnel(m)));
+}
+
+Whitted::Bounce Whitted::bounce(const SurfacePoint& s, Vec3f direct, int depth, float weight,
+                                const BounceDirections& g) const {
+  const Material& m = scene_.materials[s.material];
   Bounce b;
-  const Vec3f dir = normalize(ray.dir);
   // TileLighting takes this sum for a local_only material: the same steps there
   b.local = m.Ka * scene_.ambient + direct;
   if (shaders::refracts(m)) b.local *= m.d;  // dissolve: the local term's opacity over the refraction
   b.local += m.Ke;
 
-  // Fresnel reflectance for the Fresnel models: n1 on the incoming side, n2 beyond.
-  const float n1 = s.entering ? 1.0f : m.Ni, n2 = s.entering ? m.Ni : 1.0f;
-  const float fresnel =
-      shaders::uses_fresnel(model) ? shaders::fresnel_dielectric(-dot(dir, s.ns), n1, n2) : 1.0f;
-
   if (shaders::reflects(m)) {
     ChildRay& c = b.reflection;
-    c.k = shaders::reflection_weight(m, fresnel);
+    c.k = shaders::reflection_weight(m, g.fresnel);
     c.weight = weight * max_component(c.k);
     if (!settings_.effects.reflection) {
       c.state = Child::effect_off;
     } else if (child_worthwhile(depth, c.weight)) {
-      Vec3f r = shaders::mirror_direction(dir, s.ns);
-      if (!(dot(r, s.ng) > 0)) r = shaders::mirror_direction(dir, s.ng);  // shading normal too bent
       c.state = Child::traced;
-      c.ray = Ray{offset_ray_origin(s.p, s.ng), r, 0.0f, kInf};
+      c.ray = Ray{offset_ray_origin(s.p, s.ng), g.mirror, 0.0f, kInf};
     } else {
       c.state = Child::cutoff;
     }
   }
   if (shaders::refracts(m)) {
     ChildRay& c = b.refraction;
-    c.k = shaders::transmission_weight(m, fresnel);
+    c.k = shaders::transmission_weight(m, g.fresnel);
     c.weight = weight * max_component(c.k);
     if (!settings_.effects.refraction) {
       c.state = Child::effect_off;
     } else if (child_worthwhile(depth, c.weight)) {
-      std::optional<Vec3f> t = shaders::refract_direction(dir, s.ns, n1 / n2);
-      if (t && !(dot(*t, s.ng) < 0)) t = shaders::refract_direction(dir, s.ng, n1 / n2);
-      if (t) {
+      if (g.refracts) {
         c.state = Child::traced;
-        c.ray = Ray{offset_ray_origin(s.p, -s.ng), *t, 0.0f, kInf};
+        c.ray = Ray{offset_ray_origin(s.p, -s.ng), g.refracted, 0.0f, kInf};
       } else {  // no refracted direction: the Fresnel reflection carries it all
         c.state = Child::total_internal_reflection;
       }
@@ -128,7 +123,8 @@ Whitted::Bounce Whitted::bounce(const Ray& ray, const SurfacePoint& s, Vec3f dir
       c.state = Child::cutoff;
       // Beyond the critical angle the Fresnel reflectance is 1, so the refraction weighs 0: an
       // observer is told the cause, not the cutoff.
-      if (observer_ && depth + 1 <= settings_.max_depth && !shaders::refract_direction(dir, s.ns, n1 / n2))
+      const float eta = s.entering ? 1.0f / m.Ni : m.Ni;
+      if (observer_ && depth + 1 <= settings_.max_depth && !shaders::refract(g.dir, s.ns, eta).ok)
         c.state = Child::total_internal_reflection;
     }
   }

@@ -5,6 +5,7 @@
 // of its material's shading model (shaders/shading_model.h).
 #pragma once
 #include "accel/accelerator.h"
+#include "render/bounce_directions.h"
 #include "render/render_stats.h"
 #include "render/surface_point.h"
 #include "render/whitted_observer.h"
@@ -53,6 +54,9 @@ class Whitted {
   // The bounce of a lit hit (lit_surface gave s) reached by `ray` at `depth` carrying `weight`,
   // whose direct light is `direct`.
   Bounce bounce(const Ray& ray, const SurfacePoint& s, Vec3f direct, int depth, float weight) const;
+  // The same, given the hit's bounce_directions (render/bounce_directions.h).
+  Bounce bounce(const SurfacePoint& s, Vec3f direct, int depth, float weight,
+                const BounceDirections& g) const;
   // What shade() returns for a hit at `depth` whose bounce is b: its children traced one ray at a
   // time, recursively, their radiance added to b.local.
   Vec3f finish(const Bounce& b, int depth, RayCounts& rays) const;
