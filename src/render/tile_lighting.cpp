@@ -9,33 +9,6 @@
 namespace rayvec {
 namespace {
 
-// The loops over a tile's hits read and write distinct arrays: views with restrict pointers tell
-// the compiler so, and it runs them in SIMD lanes.
-struct Lanes3In {
-  const float* __restrict x;
-  const float* __restrict y;
-  const float* __restrict z;
-  Vec3f operator[](int j) const { return {x[j], y[j], z[j]}; }
-};
-struct Lanes3Out {
-  float* __restrict x;
-  float* __restrict y;
-  float* __restrict z;
-  void set(int j, Vec3f v) const {
-    x[j] = v.x;
-    y[j] = v.y;
-    z[j] = v.z;
-  }
-};
-template <class Lanes>
-Lanes3In in(const Lanes& v) {
-  return {v.x.data(), v.y.data(), v.z.data()};
-}
-template <class Lanes>
-Lanes3Out out(Lanes& v) {
-  return {v.x.data(), v.y.data(), v.z.data()};
-}
-
 // c ? a : b by components: no branch in a loop over lanes.
 inline Vec3f select(bool c, Vec3f a, Vec3f b) { return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z}; }
 

@@ -14,6 +14,7 @@
 
 #include "accel/accelerator.h"
 #include "render/surface_point.h"
+#include "render/vec3_lanes.h"
 #include "render/whitted.h"
 #include "scene/scene.h"
 
@@ -47,22 +48,6 @@ class TileLighting {
   void trace_shadows(const Light& light, int n);
   // What each reaching sample adds, into the sums.
   void add_reaching(int n);
-
-  // A Vec3f per hit as three float arrays, so that a loop over the hits runs in SIMD lanes.
-  struct Vec3Lanes {
-    std::vector<float> x, y, z;
-    void resize(int n) {
-      x.resize(std::size_t(n));
-      y.resize(std::size_t(n));
-      z.resize(std::size_t(n));
-    }
-    Vec3f operator[](int j) const { return {x[j], y[j], z[j]}; }
-    void set(int j, Vec3f v) {
-      x[j] = v.x;
-      y[j] = v.y;
-      z[j] = v.z;
-    }
-  };
 
   const Scene& scene_;
   const Accelerator& accel_;

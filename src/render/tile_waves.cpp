@@ -19,29 +19,10 @@ TileWaves::TileWaves(const Scene& scene, const Accelerator& accel, const Whitted
 
 namespace {
 
-// The loop over a generation's nodes reads and writes distinct arrays: restrict pointers tell the
-// compiler so, and it runs the loop in SIMD lanes.
-struct In3 {
-  const float* __restrict x;
-  const float* __restrict y;
-  const float* __restrict z;
-  Vec3f operator[](int k) const { return {x[k], y[k], z[k]}; }
-};
-struct Out3 {
-  float* __restrict x;
-  float* __restrict y;
-  float* __restrict z;
-  void set(int k, Vec3f v) const {
-    x[k] = v.x;
-    y[k] = v.y;
-    z[k] = v.z;
-  }
-};
-
-void directions_lanes(In3 ray_dir, In3 ns, In3 ng, const int32_t* __restrict entering,
-                      const float* __restrict ni, const int32_t* __restrict fresnel_model, Out3 dir,
-                      Out3 mirror, Out3 refracted, float* __restrict fresnel, int32_t* __restrict refracts,
-                      int m) {
+void directions_lanes(Lanes3In ray_dir, Lanes3In ns, Lanes3In ng, const int32_t* __restrict entering,
+                      const float* __restrict ni, const int32_t* __restrict fresnel_model, Lanes3Out dir,
+                      Lanes3Out mirror, Lanes3Out refracted, float* __restrict fresnel,
+                      int32_t* __restrict refracts, int m) {
   for (int k = 0; k < m; ++k) {
     const BounceDirections b =
         bounce_directions(ray_dir[k], ns[k], ng[k], entering[k] != 0, ni[k], fresnel_model[k] != 0);
@@ -89,8 +70,6 @@ void TileWaves::directions(const Ray* rays, const int* index, const TileLighting
     node_ni_[k] = ni;
     node_fresnel_model_[k] = fresnel_model;
   }
-  auto in = [](const Vec3Lanes& v) { return In3{v.x.data(), v.y.data(), v.z.data()}; };
-  auto out = [](Vec3Lanes& v) { return Out3{v.x.data(), v.y.data(), v.z.data()}; };
   directions_lanes(in(ray_dir_), in(ns_), in(ng_), entering_.data(), node_ni_.data(),
                    node_fresnel_model_.data(), out(dir_), out(mirror_), out(refracted_), fresnel_.data(),
                    refracts_.data(), m);

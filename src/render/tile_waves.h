@@ -16,6 +16,7 @@
 #include "render/bounce_directions.h"
 #include "render/render_stats.h"
 #include "render/tile_lighting.h"
+#include "render/vec3_lanes.h"
 #include "render/whitted.h"
 #include "scene/scene.h"
 
@@ -67,16 +68,6 @@ class TileWaves {
   // placeholder.
   void directions(const Ray* rays, const int* index, const TileLighting& lighting, int m);
   BounceDirections direction(int k) const;
-
-  // A Vec3f per node as three float arrays (the lanes' layout).
-  struct Vec3Lanes {
-    std::vector<float> x, y, z;
-    void resize(std::size_t n) {
-      x.resize(n);
-      y.resize(n);
-      z.resize(n);
-    }
-  };
 
   const Scene& scene_;
   const Accelerator& accel_;
