@@ -6,11 +6,7 @@ namespace rayvec {
 
 TileWaves::TileWaves(const Scene& scene, const Accelerator& accel, const Whitted& whitted,
                      std::size_t max_wave_rays)
-    : scene_(scene),
-      accel_(accel),
-      whitted_(whitted),
-      max_wave_rays_(max_wave_rays),
-      lighting_(scene, accel, whitted) {
+    : accel_(accel), whitted_(whitted), max_wave_rays_(max_wave_rays), lighting_(scene, accel, whitted) {
   for (const Material& m : scene.materials) {
     ni_.push_back(m.Ni);
     fresnel_model_.push_back(shaders::uses_fresnel(m));

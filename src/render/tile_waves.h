@@ -1,10 +1,10 @@
 // TileWaves: shades a tile's camera hits generation by generation instead of ray by ray. The camera
 // hits are generation 0; the mirror and refraction rays they spawn (Whitted::bounce) make the next
-// generation, traced as one stream (Accelerator::closest_group: packets where the rays run
-// together) and lit together (TileLighting: shadow rays as streams, shading in SIMD lanes); and so on
-// until no hit spawns a ray. Each hit keeps its local term, its children's coefficients and where
-// its children lie in the next generation; last, from the deepest generation up, each hit adds
-// its children's radiance to its local term — reflection first, then refraction, as shade() adds
+// generation, traced as one stream (Accelerator::closest_stream: 16-ray packets whose lanes that
+// part ways finish by single-ray traversal) and lit together (TileLighting: shadow rays as streams, shading
+// in SIMD lanes); and so on until no hit spawns a ray. Each hit keeps its local term, its children's
+// coefficients and where its children lie in the next generation; last, from the deepest generation up, each
+// hit adds its children's radiance to its local term — reflection first, then refraction, as shade() adds
 // them — so every pixel gets the bits that Whitted::shade() gives it ray by ray
 // (benchmarks.md#decision-tile-waves).
 #pragma once
@@ -69,7 +69,6 @@ class TileWaves {
   void directions(const Ray* rays, const int* index, const TileLighting& lighting, int m);
   BounceDirections direction(int k) const;
 
-  const Scene& scene_;
   const Accelerator& accel_;
   const Whitted& whitted_;
   const std::size_t max_wave_rays_;

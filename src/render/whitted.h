@@ -4,6 +4,8 @@
 // child whose weight falls below `min_contribution` is not traced. Which of these a hit gets is asked
 // of its material's shading model (shaders/shading_model.h).
 #pragma once
+#include <cstdint>
+
 #include "accel/accelerator.h"
 #include "render/bounce_directions.h"
 #include "render/render_stats.h"
