@@ -146,9 +146,9 @@ void TileWaves::shade(const Ray* rays, const Hit* hits, int n, const TileLightin
     const int32_t reflected = int32_t(reflections_.rays.size());
     for (Node& node : nodes)
       if (node.refraction >= 0) node.refraction += reflected;
-    rays_.assign(reflections_.rays.begin(), reflections_.rays.end());
+    rays_.swap(reflections_.rays);  // the generation just expanded goes; cleared before the next one
     rays_.insert(rays_.end(), refractions_.rays.begin(), refractions_.rays.end());
-    weights_.assign(reflections_.weights.begin(), reflections_.weights.end());
+    weights_.swap(reflections_.weights);
     weights_.insert(weights_.end(), refractions_.weights.begin(), refractions_.weights.end());
     if (rays_.empty()) break;
     ++depth;
