@@ -5,6 +5,7 @@ find_package(FastFloat REQUIRED)  # libfast-float-dev: header only, obj_chunk.cp
 include(${CMAKE_CURRENT_LIST_DIR}/OpenImageIO.cmake)  # only in the librayvec_oiio.so module
 find_package(OpenEXR 3 REQUIRED CONFIG)  # only in the librayvec_exr.so module
 find_package(PNG REQUIRED)
+find_package(ZLIB REQUIRED)  # zlib1g-dev: png_encoder.cpp deflates the PNGs rayvec writes
 find_package(JPEG REQUIRED)  # libjpeg-dev (libjpeg-turbo): jpeg_file.cpp
 find_package(nlohmann_json REQUIRED)
 find_package(glm REQUIRED)

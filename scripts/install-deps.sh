@@ -7,7 +7,7 @@
 # between its configurations).
 set -euo pipefail
 packages=(build-essential cmake pkg-config
-          libtinyobjloader-dev libfast-float-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev libjpeg-dev
+          libtinyobjloader-dev libfast-float-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev zlib1g-dev libjpeg-dev
           libglm-dev nlohmann-json3-dev libcli11-dev
           libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev clang-format
           python3             # scripts/*.py, and the test that runs the benchmark scene's script

@@ -20,6 +20,7 @@
 #include "image/image_budget.h"
 #include "image/jpeg_file.h"
 #include "image/oiio_module.h"
+#include "image/png_encoder.h"
 #include "image/png_file.h"
 #include "image/srgb8.h"
 #include "io/atomic_file.h"
@@ -36,7 +37,8 @@ std::string lower_extension(const std::string& path) {
 }
 
 // The image as a PNG: 8-bit sRGB bytes (encode, clamp, round to nearest; no dither, so output is
-// repeatable), by the table of srgb8.h rather than a pow() per channel, a row at a time.
+// repeatable), by the table of srgb8.h rather than a pow() per channel, a row at a time on each of
+// the encoder's threads.
 std::vector<std::uint8_t> encode_png(const Image& image, const ImageMetadata& metadata) {
   const std::size_t row_floats = std::size_t(image.width) * std::size_t(image.nchannels());
   return encode_png_rgb8(

@@ -23,7 +23,6 @@ struct PngContext {
   png_infop info = nullptr;
   std::FILE* file = nullptr;
   char error[200] = "";
-  std::vector<std::uint8_t>* out = nullptr;  // encoding target
 };
 
 extern "C" void on_png_error(png_structp png, png_const_charp message) {
@@ -33,13 +32,6 @@ extern "C" void on_png_error(png_structp png, png_const_charp message) {
 }
 
 extern "C" void on_png_warning(png_structp, png_const_charp) {}
-
-extern "C" void on_png_write(png_structp png, png_bytep data, png_size_t size) {
-  auto* ctx = static_cast<PngContext*>(png_get_io_ptr(png));
-  ctx->out->insert(ctx->out->end(), data, data + size);
-}
-
-extern "C" void on_png_flush(png_structp) {}
 
 struct ReadHeader {
   png_uint_32 width = 0, height = 0;
@@ -72,28 +64,6 @@ bool read_rows(PngContext& ctx, png_bytepp rows) {
   if (setjmp(png_jmpbuf(ctx.png))) return false;
   png_read_image(ctx.png, rows);
   png_read_end(ctx.png, nullptr);
-  return true;
-}
-
-bool write_all(PngContext& ctx, int width, int height, const PngRowSource& rows, png_bytep row,
-               png_textp text, int ntext) {
-  if (setjmp(png_jmpbuf(ctx.png))) return false;
-  png_set_write_fn(ctx.png, &ctx, on_png_write, on_png_flush);
-  png_set_IHDR(ctx.png, ctx.info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  // Speed over size: zlib level 1 with no row filter writes a 640×480 render about 3× faster than
-  // libpng's default (level 6, adaptive filters) for files about a quarter larger
-  // (benchmarks.md#decision-png-speed) — at small sizes the encoder was a third of a render.
-  png_set_compression_level(ctx.png, 1);
-  png_set_filter(ctx.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
-  png_set_sRGB_gAMA_and_cHRM(ctx.png, ctx.info, PNG_sRGB_INTENT_PERCEPTUAL);
-  if (ntext > 0) png_set_text(ctx.png, ctx.info, text, ntext);
-  png_write_info(ctx.png, ctx.info);
-  for (int y = 0; y < height; ++y) {
-    rows(y, row);
-    png_write_row(ctx.png, row);
-  }
-  png_write_end(ctx.png, ctx.info);
   return true;
 }
 
@@ -168,32 +138,6 @@ Image read_png(const std::string& path, bool* sixteen_bit) {
   const ImageBytes raw = read_png_bytes(path);
   if (sixteen_bit) *sixteen_bit = raw.bits == 16;
   return image_of_bytes(raw);
-}
-
-std::vector<std::uint8_t> encode_png_rgb8(int width, int height, const PngRowSource& rows,
-                                          const ImageMetadata& metadata) {
-  std::vector<std::uint8_t> out;
-  PngContext ctx;
-  ctx.out = &out;
-  struct Cleanup {
-    PngContext& c;
-    ~Cleanup() {
-      if (c.png) png_destroy_write_struct(&c.png, c.info ? &c.info : nullptr);
-    }
-  } cleanup{ctx};
-  ctx.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_png_error, on_png_warning);
-  if (ctx.png) ctx.info = png_create_info_struct(ctx.png);
-  if (!ctx.png || !ctx.info) throw RuntimeError("cannot encode PNG: out of memory");
-  std::vector<png_byte> row(std::size_t(width) * 3);
-  std::vector<png_text> text(metadata.size());
-  for (std::size_t i = 0; i < metadata.size(); ++i) {
-    text[i].compression = PNG_TEXT_COMPRESSION_NONE;
-    text[i].key = const_cast<char*>(metadata[i].first.c_str());
-    text[i].text = const_cast<char*>(metadata[i].second.c_str());
-  }
-  if (!write_all(ctx, width, height, rows, row.data(), text.data(), int(text.size())))
-    throw RuntimeError(std::string("cannot encode PNG: ") + ctx.error);
-  return out;
 }
 
 }  // namespace rayvec

@@ -8,7 +8,13 @@ namespace {
 
 std::string be32(std::uint32_t v) { return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; }
 
-std::uint32_t crc32(const std::string& bytes) {  // PNG's CRC (ISO 3309), bit by bit
+std::string chunk(const std::string& type, const std::string& data) {
+  return be32(std::uint32_t(data.size())) + type + data + be32(png_crc32(type + data));
+}
+
+}  // namespace
+
+std::uint32_t png_crc32(const std::string& bytes) {  // bit by bit
   std::uint32_t crc = 0xffffffffu;
   for (unsigned char b : bytes) {
     crc ^= b;
@@ -16,12 +22,6 @@ std::uint32_t crc32(const std::string& bytes) {  // PNG's CRC (ISO 3309), bit by
   }
   return crc ^ 0xffffffffu;
 }
-
-std::string chunk(const std::string& type, const std::string& data) {
-  return be32(std::uint32_t(data.size())) + type + data + be32(crc32(type + data));
-}
-
-}  // namespace
 
 std::string png_claiming(std::uint32_t width, std::uint32_t height) {
   const std::string ihdr = be32(width) + be32(height) + std::string("\x08\x02\x00\x00\x00", 5);

@@ -5,6 +5,9 @@
 
 namespace rayvec::test {
 
+// PNG's CRC-32 (ISO 3309) of a chunk's type and data.
+std::uint32_t png_crc32(const std::string& bytes);
+
 // A PNG of `width`×`height` 8-bit RGB whose IDAT holds only a few bytes (a decompression bomb's
 // header, or a truncated file): valid signature, IHDR and CRCs, so only the size is wrong.
 std::string png_claiming(std::uint32_t width, std::uint32_t height);

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "image/image_io.h"
-#include "image/png_file.h"
+#include "image/png_encoder.h"
 #include "test_support.h"
 
 namespace rayvec {
