@@ -15,7 +15,7 @@
 namespace rayvec {
 namespace {
 
-constexpr std::size_t kBandBytes = 128 * 1024;  // row bytes a band holds at least
+constexpr std::size_t kBandBytes = 256 * 1024;  // row bytes a band holds at least
 constexpr std::size_t kMaxChunk = 1 << 20;      // an IDAT chunk's data at most
 constexpr int kLevel = 1;                       // benchmarks.md#decision-png-speed
 

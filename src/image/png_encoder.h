@@ -15,7 +15,7 @@ namespace rayvec {
 using PngRowSource = std::function<void(int y, std::uint8_t* row)>;
 
 // Rows a band of an image `width` pixels wide holds: enough that a band's own deflate dictionary,
-// started empty, costs a few percent of size at most (at least 128 KiB of row bytes).
+// started empty, costs a few percent of size at most (at least 256 KiB of row bytes).
 int png_band_rows(int width);
 
 // Encodes 8-bit RGB rows as a PNG in memory: no row filter, zlib level 1, the sRGB, gAMA and cHRM
