@@ -141,7 +141,7 @@ class Remeasure:
         for k, commit in enumerate(commits, 1):
             log(f"remeasure: building {commit} ({k} of {len(commits)}, every CPU)")
             binaries[commit] = subprocess.run([f"{ROOT}/scripts/build_at.sh", commit], capture_output=True,
-                                              text=True, check=True, preexec_fn=unpinned).stdout.strip()
+                                              text=True, check=True, preexec_fn=targets.unpinned).stdout.strip()
         return binaries
 
     def measure(self, old, new, command):
@@ -177,14 +177,6 @@ class Remeasure:
                 log(f"remeasure: {anchor}: {label}")
                 print(f"- {label}:\n\n```\n{self.measure(old, new, command)}\n```\n")
             print()
-
-
-def unpinned():
-    """In a child before exec: every CPU of the machine, whatever this script was pinned to."""
-    try:
-        os.sched_setaffinity(0, range(os.cpu_count() or 1))
-    except OSError:  # a CPU outside this container's set: keep the inherited one
-        pass
 
 
 def platform_line():
