@@ -53,15 +53,9 @@ void TileWaves::directions(const Ray* rays, const int* index, const TileLighting
       ni = ni_[std::size_t(s.material)];
       fresnel_model = fresnel_model_[std::size_t(s.material)];
     }
-    ray_dir_.x[k] = d.x;
-    ray_dir_.y[k] = d.y;
-    ray_dir_.z[k] = d.z;
-    ns_.x[k] = ns.x;
-    ns_.y[k] = ns.y;
-    ns_.z[k] = ns.z;
-    ng_.x[k] = ng.x;
-    ng_.y[k] = ng.y;
-    ng_.z[k] = ng.z;
+    ray_dir_.set(std::size_t(k), d);
+    ns_.set(std::size_t(k), ns);
+    ng_.set(std::size_t(k), ng);
     entering_[k] = entering;
     node_ni_[k] = ni;
     node_fresnel_model_[k] = fresnel_model;
@@ -73,11 +67,7 @@ void TileWaves::directions(const Ray* rays, const int* index, const TileLighting
 
 BounceDirections TileWaves::direction(int k) const {
   const std::size_t i = std::size_t(k);
-  return {{dir_.x[i], dir_.y[i], dir_.z[i]},
-          fresnel_[i],
-          {mirror_.x[i], mirror_.y[i], mirror_.z[i]},
-          {refracted_.x[i], refracted_.y[i], refracted_.z[i]},
-          refracts_[i] != 0};
+  return {dir_[i], fresnel_[i], mirror_[i], refracted_[i], refracts_[i] != 0};
 }
 
 void TileWaves::expand(const Ray& ray, const Hit& hit, const TileLighting& lighting, int j, int k, int depth,
