@@ -155,7 +155,7 @@ unsigned occluded_mt_float_one_origin(const TriangleArrays& T, uint32_t begin, u
           const auto hi = [&](int k) __attribute__((always_inline)) { return open_hi[k]; };
           bool passes;
           if constexpr (Crossed)
-            passes = mt_any_ray_passes_crossed<V, false, R>(at, q, o, active, vslack, neg_lo, hi);
+            passes = mt_any_ray_passes_crossed<V, false, R, P>(at, q, o, active, vslack, neg_lo, hi);
           else
             passes = mt_any_ray_passes<V, false, R>(at, q, o, active, neg_lo, hi);
           if (passes) {

@@ -136,31 +136,50 @@ RAYVEC_INLINE MtOriginCross<V> mt_origin_cross(const At& at, const MtOrigin<V>& 
 // |det|·(1 + 2^-20) + 5·slack − u − v then stays above zero wherever the ray's own (v − u)·|det| <=
 // |det| holds, its roundings (a few 2^-24 of |det| and of the slacks) inside the 2^-20·|det| and
 // the two spare slacks; the depth values are the per-ray pre-test's (mt_sign_values).
-template <class V, bool TminZero>
+// det's orientation goes in one of two ways, the same bits either way (s·x is exact for s = ±1): as
+// xor_sign and an add or subtract, or with FusedSign as an FMA by det's sign as ±1 (sign_one) — two
+// instructions fewer a ray, all of them FMAs. The first suits a core with pipes for adds and bitwise
+// operations beside its FMA pipes, the second one whose vector operations all share the FMA ports
+// (benchmarks.md#decision-crossed-group-test).
+template <class V, bool TminZero, bool FusedSign>
 RAYVEC_INLINE V mt_crossed_sign_values(const RayLanes<V>& r, const MtOrigin<V>& o, const MtOriginCross<V>& x,
                                        V slack, V slack5, V neg_lo, V hi) {
   const V zero = V::broadcast(0.0f);
   const V det = fmadd(r.dx, o.ng.x, fmadd(r.dy, o.ng.y, r.dz * o.ng.z));  // as mt_numerator_values
   const V adet = abs(det);
-  const V u = slack - xor_sign(fmadd(r.dx, x.ax, fmadd(r.dy, x.ay, r.dz * x.az)), det);
-  const V v = xor_sign(fmadd(r.dx, x.bx, fmadd(r.dy, x.by, r.dz * x.bz)), det) + slack;
+  const V un = fmadd(r.dx, x.ax, fmadd(r.dy, x.ay, r.dz * x.az)),
+          vn = fmadd(r.dx, x.bx, fmadd(r.dy, x.by, r.dz * x.bz));
+  V u, v, tn, low;
+  if constexpr (FusedSign) {
+    const V s = sign_one(det);
+    u = fnmadd(s, un, slack);
+    v = fmadd(s, vn, slack);
+    tn = TminZero ? fmadd(s, o.tn, zero) : s * o.tn;  // with TminZero, −0 made +0 as below
+    low = TminZero ? tn : fmadd(neg_lo, adet, tn);
+  } else {
+    u = slack - xor_sign(un, det);
+    v = xor_sign(vn, det) + slack;
+    tn = xor_sign(o.tn, det);
+    low = TminZero ? tn + zero : fmadd(neg_lo, adet, tn);
+  }
   const V w = fmadd(adet, V::broadcast(kMtWiden), slack5) - (u + v);
-  const V tn = xor_sign(o.tn, det);
-  const V low = TminZero ? tn + zero : fmadd(neg_lo, adet, tn);
   const V nearer = fmsub(hi, adet, tn);
   return or3(or3(u, v, w), low, nearer);
 }
 
-template <class V, bool TminZero, int R, class At, class Q, class Hi>
+template <class V, bool TminZero, int R, MtPretest P, class At, class Q, class Hi>
 RAYVEC_INLINE bool mt_any_ray_passes_crossed(const At& at, const Q* q, const MtOrigin<V>& o,
                                              typename V::Mask active, V slack, const V* neg_lo,
                                              const Hi& hi) {
+  // the fused sign with the ordered pre-test's table: both are the choices for Intel's ports
+  constexpr bool kFused = P == MtPretest::ordered_compares;
   const MtOriginCross<V> x = mt_origin_cross<V>(at, o);
   const V slack5 = slack * V::broadcast(5.0f);
-  V some = mt_crossed_sign_values<V, TminZero>(q[0].r, o, x, slack, slack5, neg_lo[0], hi(0));
+  V some = mt_crossed_sign_values<V, TminZero, kFused>(q[0].r, o, x, slack, slack5, neg_lo[0], hi(0));
 #pragma GCC unroll 16
   for (int k = 1; k < R; ++k)
-    some = and_bits(some, mt_crossed_sign_values<V, TminZero>(q[k].r, o, x, slack, slack5, neg_lo[k], hi(k)));
+    some = and_bits(
+        some, mt_crossed_sign_values<V, TminZero, kFused>(q[k].r, o, x, slack, slack5, neg_lo[k], hi(k)));
   return any_sign_clear(active, some);
 }
 
@@ -225,7 +244,7 @@ void closest_mt_float_rays(const TriangleArrays& T, uint32_t begin, uint32_t end
             const auto hi = [&](int k) __attribute__((always_inline)) { return q[k].b.hi; };
             bool passes;
             if constexpr (Crossed)
-              passes = mt_any_ray_passes_crossed<V, TminZero, R>(at, q, o, active, vslack, neg_lo, hi);
+              passes = mt_any_ray_passes_crossed<V, TminZero, R, P>(at, q, o, active, vslack, neg_lo, hi);
             else
               passes = mt_any_ray_passes<V, TminZero, R>(at, q, o, active, neg_lo, hi);
             if (passes) mt_closest_steps<V, TminZero, R, P>(at, i, q, o, active, neg_lo);

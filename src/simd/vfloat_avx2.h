@@ -67,6 +67,8 @@ RAYVEC_INLINE vfloat xor_bits(vfloat a, vfloat b) { return {_mm256_xor_ps(a.v, b
 RAYVEC_INLINE vfloat and_bits(vfloat a, vfloat b) { return {_mm256_and_ps(a.v, b.v)}; }
 // a with its sign flipped in the lanes where s is negative
 RAYVEC_INLINE vfloat xor_sign(vfloat a, vfloat s) { return xor_bits(a, sign_bit(s)); }
+// ±1 with the sign of s in each lane (multiplying by it flips where xor_sign(·, s) would)
+RAYVEC_INLINE vfloat sign_one(vfloat s) { return {_mm256_or_ps(sign_bit(s).v, _mm256_set1_ps(1.0f))}; }
 RAYVEC_INLINE vdouble operator+(vdouble a, vdouble b) { return {_mm256_add_pd(a.v, b.v)}; }
 RAYVEC_INLINE vdouble operator-(vdouble a, vdouble b) { return {_mm256_sub_pd(a.v, b.v)}; }
 RAYVEC_INLINE vdouble operator*(vdouble a, vdouble b) { return {_mm256_mul_pd(a.v, b.v)}; }

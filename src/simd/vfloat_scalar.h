@@ -81,6 +81,11 @@ template <typename T, typename B>
 RAYVEC_INLINE vlane<T, B> xor_sign(vlane<T, B> a, vlane<T, B> s) {
   return xor_bits(a, sign_bit(s));
 }
+// ±1 with the sign of s (multiplying by it flips where xor_sign(·, s) would)
+template <typename T, typename B>
+RAYVEC_INLINE vlane<T, B> sign_one(vlane<T, B> s) {
+  return {std::bit_cast<T>(B(std::bit_cast<B>(sign_bit(s).v) | std::bit_cast<B>(T(1))))};
+}
 // C++ comparisons are ordered: false whenever either side is NaN.
 template <typename T, typename B>
 RAYVEC_INLINE vmask operator>=(vlane<T, B> a, vlane<T, B> b) {
