@@ -140,7 +140,7 @@ RAYVEC_INLINE MtOriginCross<V> mt_origin_cross(const At& at, const MtOrigin<V>& 
 // xor_sign and an add or subtract, or with FusedSign as an FMA by det's sign as ±1 (sign_one) — two
 // instructions fewer a ray, all of them FMAs. The first suits a core with pipes for adds and bitwise
 // operations beside its FMA pipes, the second one whose vector operations all share the FMA ports
-// (benchmarks.md#decision-crossed-group-test).
+// (benchmarks.md#decision-fused-sign).
 template <class V, bool TminZero, bool FusedSign>
 RAYVEC_INLINE V mt_crossed_sign_values(const RayLanes<V>& r, const MtOrigin<V>& o, const MtOriginCross<V>& x,
                                        V slack, V slack5, V neg_lo, V hi) {
