@@ -147,22 +147,22 @@ RAYVEC_INLINE V mt_crossed_sign_values(const RayLanes<V>& r, const MtOrigin<V>& 
   const V zero = V::broadcast(0.0f);
   const V det = fmadd(r.dx, o.ng.x, fmadd(r.dy, o.ng.y, r.dz * o.ng.z));  // as mt_numerator_values
   const V adet = abs(det);
-  const V un = fmadd(r.dx, x.ax, fmadd(r.dy, x.ay, r.dz * x.az)),
-          vn = fmadd(r.dx, x.bx, fmadd(r.dy, x.by, r.dz * x.bz));
-  V u, v, tn, low;
   if constexpr (FusedSign) {
+    const V un = fmadd(r.dx, x.ax, fmadd(r.dy, x.ay, r.dz * x.az)),
+            vn = fmadd(r.dx, x.bx, fmadd(r.dy, x.by, r.dz * x.bz));
     const V s = sign_one(det);
-    u = fnmadd(s, un, slack);
-    v = fmadd(s, vn, slack);
-    tn = TminZero ? fmadd(s, o.tn, zero) : s * o.tn;  // with TminZero, −0 made +0 as below
-    low = TminZero ? tn : fmadd(neg_lo, adet, tn);
-  } else {
-    u = slack - xor_sign(un, det);
-    v = xor_sign(vn, det) + slack;
-    tn = xor_sign(o.tn, det);
-    low = TminZero ? tn + zero : fmadd(neg_lo, adet, tn);
+    const V u = fnmadd(s, un, slack), v = fmadd(s, vn, slack);
+    const V w = fmadd(adet, V::broadcast(kMtWiden), slack5) - (u + v);
+    const V tn = TminZero ? fmadd(s, o.tn, zero) : s * o.tn;  // with TminZero, −0 made +0 as below
+    const V low = TminZero ? tn : fmadd(neg_lo, adet, tn);
+    const V nearer = fmsub(hi, adet, tn);
+    return or3(or3(u, v, w), low, nearer);
   }
+  const V u = slack - xor_sign(fmadd(r.dx, x.ax, fmadd(r.dy, x.ay, r.dz * x.az)), det);
+  const V v = xor_sign(fmadd(r.dx, x.bx, fmadd(r.dy, x.by, r.dz * x.bz)), det) + slack;
   const V w = fmadd(adet, V::broadcast(kMtWiden), slack5) - (u + v);
+  const V tn = xor_sign(o.tn, det);
+  const V low = TminZero ? tn + zero : fmadd(neg_lo, adet, tn);
   const V nearer = fmsub(hi, adet, tn);
   return or3(or3(u, v, w), low, nearer);
 }
