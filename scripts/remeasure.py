@@ -72,7 +72,7 @@ DECISIONS = (
     ("decision-scalar-hull", "b89f19c", "772ac01",
      [rays(6, "regr01", "--isa avx512 --size 1024x1024"), rays(6, "sphere4k", "--isa avx512 --size 1024x1024"),
       rays(6, "regr01", "--isa avx2 --size 1024x1024"), rays(6, "WusonOBJ", "--isa avx2 --size 1024x1024")]),
-    ("decision-fused-sign", "f67d973", "8e415ee",
+    ("decision-fused-sign", "f67d973", "f49928e",
      [cpu(4, "bench paper --models mod2 --no-baselines --no-scaling --threads 1 --isa avx512"),
       cpu(4, "hits --mesh {mod2} --rays {mod2.csv} --accel brute --threads 1 --isa avx512 -o {out}"),
       cpu(4, "visibility {vis} --origin 0,0,-3 --accel brute --threads 1 --isa avx512 -o {out}")]),
