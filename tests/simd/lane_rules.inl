@@ -28,4 +28,13 @@ void packet_hull_lanes(const float* soa, unsigned lanes, float eps, test::Packet
                                 k.kny, k.knz, k.kfx, k.kfy, k.kfz, k.tmin, k.tmax};
   for (int j = 0; j < 14; ++j) each[j].store(out->lanes[j]);
 }
+void det_sign_forms_lanes(const float* x, const float* det, float slack, float* out, int n) {
+  const vfloat c = vfloat::broadcast(slack), zero = vfloat::broadcast(0.0f);
+  for (int i = 0; i < n; i += vfloat::W) {
+    const vfloat a = vfloat::load(x + i), d = vfloat::load(det + i), s = sign_one(d);
+    const vfloat forms[6] = {fnmadd(s, a, c),    c - xor_sign(a, d), fmadd(s, a, c),
+                             xor_sign(a, d) + c, fmadd(s, a, zero),  xor_sign(a, d) + zero};
+    for (int r = 0; r < 6; ++r) forms[r].store(out + r * n + i);
+  }
+}
 }  // namespace

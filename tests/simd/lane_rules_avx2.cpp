@@ -18,5 +18,5 @@ using PacketFloat = VPair<vfloat>;
 }  // namespace rayvec::avx2
 
 rayvec::test::LaneRules rayvec::test::lane_rules_avx2() {
-  return {&avx2::next_up_lanes, &avx2::mt_lower_lanes, &avx2::packet_hull_lanes};
+  return {&avx2::next_up_lanes, &avx2::mt_lower_lanes, &avx2::packet_hull_lanes, &avx2::det_sign_forms_lanes};
 }

@@ -18,5 +18,6 @@ using PacketFloat = vfloat;
 }  // namespace rayvec::avx512
 
 rayvec::test::LaneRules rayvec::test::lane_rules_avx512() {
-  return {&avx512::next_up_lanes, &avx512::mt_lower_lanes, &avx512::packet_hull_lanes};
+  return {&avx512::next_up_lanes, &avx512::mt_lower_lanes, &avx512::packet_hull_lanes,
+          &avx512::det_sign_forms_lanes};
 }

@@ -3,7 +3,8 @@
 // the smallest subnormal, −inf the most negative finite value, +inf and NaN stay), and mt_lower is
 // tmin·(1 − 2^-20) for tmin > 0, 0 for ±0 and −inf otherwise (NaN included). The packet traversals
 // form both in lanes (bvh/packet_any_hit.inl, packet_traversal.inl, packet_leaf.inl); a lane that
-// disagreed would move a packet's closed end t <= tmax away from the single ray's. Every ISA with
+// disagreed would move a packet's closed end t <= tmax away from the single ray's. And the two forms
+// of the one-origin group test's det orientation, which must agree bit for bit. Every ISA with
 // vector lanes; ISAs the CPU lacks are skipped and named.
 #include <gtest/gtest.h>
 
@@ -115,6 +116,31 @@ TEST_P(LaneRules, PacketHullIsTheExtremesOfItsLanes) {
             << want << " wanted, " << got.hull[j] << " got";
       }
     }
+  }
+}
+
+// det's orientation by an FMA with sign_one(det) = ±1 (Intel's table) gives the bits of the sign
+// flip and add (the others'): s·x is exact, and both round the same sum once; with 0 added, −0
+// becomes +0 either way. A NaN stays a NaN. The one-origin group test takes one form or the other
+// and must pass the same lanes with either.
+TEST_P(LaneRules, DetSignByFmaIsTheFlipAndAddBitForBit) {
+  std::vector<float> x = hard_values(), det = hard_values();
+  std::mt19937 rng(11);
+  std::shuffle(det.begin(), det.end(), rng);
+  const int n = int(x.size());
+  for (float slack : {0.0f, 0x1p-30f, 1.0f, 3e38f}) {
+    std::vector<float> out(6 * std::size_t(n));
+    rules().det_sign_forms(x.data(), det.data(), slack, out.data(), n);
+    for (int i = 0; i < n; ++i)
+      for (int r = 0; r < 6; r += 2) {
+        const float fused = out[std::size_t(r * n + i)], flipped = out[std::size_t((r + 1) * n + i)];
+        if (std::isnan(flipped))
+          EXPECT_TRUE(std::isnan(fused)) << isa_name(GetParam()) << " form " << r << " of " << x[i];
+        else
+          EXPECT_EQ(std::bit_cast<uint32_t>(flipped), std::bit_cast<uint32_t>(fused))
+              << isa_name(GetParam()) << " form " << r << ": x " << x[i] << ", det " << det[i] << ", slack "
+              << slack << ": " << flipped << " flipped, " << fused << " fused";
+      }
   }
 }
 
