@@ -140,7 +140,8 @@ RAYVEC_INLINE MtOriginCross<V> mt_origin_cross(const At& at, const MtOrigin<V>& 
 // xor_sign and an add or subtract, or with FusedSign as an FMA by det's sign as ±1 (sign_one) — two
 // instructions fewer a ray, all of them FMAs. The first suits a core with pipes for adds and bitwise
 // operations beside its FMA pipes, the second one whose vector operations all share the FMA ports
-// (benchmarks.md#decision-fused-sign).
+// (benchmarks.md#decision-fused-sign). Each form is written out whole, tail included: sharing the
+// tail changes how g++ schedules the sign-bit form, which stays as measured.
 template <class V, bool TminZero, bool FusedSign>
 RAYVEC_INLINE V mt_crossed_sign_values(const RayLanes<V>& r, const MtOrigin<V>& o, const MtOriginCross<V>& x,
                                        V slack, V slack5, V neg_lo, V hi) {
@@ -153,7 +154,8 @@ RAYVEC_INLINE V mt_crossed_sign_values(const RayLanes<V>& r, const MtOrigin<V>& 
     const V s = sign_one(det);
     const V u = fnmadd(s, un, slack), v = fmadd(s, vn, slack);
     const V w = fmadd(adet, V::broadcast(kMtWiden), slack5) - (u + v);
-    const V tn = TminZero ? fmadd(s, o.tn, zero) : s * o.tn;  // with TminZero, −0 made +0 as below
+    // with TminZero, −0 made +0 as the add below does
+    const V tn = TminZero ? fmadd(s, o.tn, zero) : s * o.tn;
     const V low = TminZero ? tn : fmadd(neg_lo, adet, tn);
     const V nearer = fmsub(hi, adet, tn);
     return or3(or3(u, v, w), low, nearer);
