@@ -20,7 +20,8 @@ Sections (each can be skipped; one whose tool is missing is skipped with the rea
   choices  the defaults that depend on the CPU's vendor or the mesh's size (`rayvec info` prints
            their rules), each option against its alternative on meshes either side of its line, per
            ISA (`bench rays --vs-embree`, 512x512, ratio of the ratios to Embree per round): node
-           width, leaf call, packet slot cull — the measurements their Decisions rest on, on this CPU
+           width, leaf call, packet slot cull, leaf steps (on meshes above 32,768 triangles, where
+           the vendor decides) — the measurements their Decisions rest on, on this CPU
   povray   every scenes/*.json and the 1M sphere's scene, `rayvec render --spp 1 --threads 1`
            against POV-Ray 3.7 on the converted scene (scripts/scene_to_pov.py), CPU time of the
            whole processes, alternating rounds; RMSE of the two pictures
@@ -286,7 +287,8 @@ class Targets:
     CHOICES = (("--bvh-width", ("8", "16"), "bvh_width", ("sphere4k", "sphere1m"), "decision-node-width"),
                ("--direct-leaf", ("1", "2"), "leaf_call", ("sphere4k", "sphere1m"), "decision-inlined-leaf"),
                ("--slot-cull", ("0", "1"), "packet_slot_cull", ("sphere250k", "sphere1m"),
-                "decision-packet-slot-cull"))
+                "decision-packet-slot-cull"),
+               ("--leaf-steps", ("2", "1"), "leaf_steps", ("sphere250k", "sphere1m"), "decision-leaf-size"))
 
     def choices(self):
         if not self.has_embree("choices"):

@@ -68,7 +68,9 @@ BvhAccelerator::BvhAccelerator(const TriangleMesh& mesh, const TraceConfig& conf
   const bool from_kernel = options.leaves_from_kernel && step >= 8;
   if (from_kernel) {
     sah.leaf_block = step;
-    const int steps = default_leaf_steps(config.isa, mesh.size());
+    const int steps =
+        options.leaf_steps > 0 ? options.leaf_steps : default_leaf_steps(config.isa, mesh.size());
+    leaf_steps_ = steps;
     sah.max_leaf = std::min(uint32_t(steps) * sah.leaf_block, kMaxLeafTriangles);
   }
   const auto merge_slots = std::min(uint32_t(std::max(options.merge_steps, 0)) * step, kMaxLeafTriangles);

@@ -20,6 +20,8 @@ struct BvhOptions {
   // tree's cost is lower: #decision-leaf-block-choice; scalar keeps sah's 4 and 8). false: use
   // sah.max_leaf and sah.leaf_block as given.
   bool leaves_from_kernel = true;
+  // With leaves_from_kernel: the most kernel steps a SAH leaf holds; 0 = default_leaf_steps.
+  int leaf_steps = 0;
   int width = 0;  // children per node: 0 = default_bvh_width(isa, triangles)
   // A subtree that a full node leaves as its child becomes one leaf when its triangles fit in this
   // many kernel steps (at most 32 slots; 0: never): a leaf test instead of a node of 2–4 leaves
@@ -111,6 +113,9 @@ class BvhAccelerator final : public Accelerator {
   // The SAH's leaf block the tree was built with (SahConfig::leaf_block): the kernel's width, or on
   // small meshes half of it where that tree's cost is the lower.
   uint32_t leaf_block() const { return leaf_block_; }
+  // The most kernel steps a SAH leaf could hold (BvhOptions::leaf_steps or its default); 0 where the
+  // leaves were not sized to the kernel (BvhOptions::leaves_from_kernel false, or the scalar ISA).
+  int leaf_steps() const { return leaf_steps_; }
   const BvhBuildTimes& build_times() const { return build_times_; }
 
  private:
@@ -120,6 +125,7 @@ class BvhAccelerator final : public Accelerator {
   const TriangleKernels* kernels_;
   const BvhTraversal* traversal_;
   uint32_t leaf_block_ = 0;
+  int leaf_steps_ = 0;
   BvhBuildTimes build_times_;
 };
 

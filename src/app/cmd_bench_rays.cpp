@@ -34,6 +34,7 @@ struct Options {
   bool json = false, vs_embree = false;
   int repeats = 5, width = 0;
   int max_leaf = 0, leaf_block = 0;  // 0: the builder's defaults
+  int leaf_steps = 0;                // 0: default_leaf_steps
   int leaf_call = -1;                // -1: default_leaf_call, else a LeafCall
   int merge_steps = BvhOptions{}.merge_steps;
   int builds = 3;  // builds timed; the median is reported
@@ -164,6 +165,8 @@ int run(const Options& o) {
     bvh_options.sah.max_leaf = uint32_t(o.max_leaf);
     bvh_options.leaves_from_kernel = false;
   }
+  if (o.leaf_steps < 0 || o.leaf_steps > 2) throw InputError("--leaf-steps: must be 0, 1 or 2");
+  bvh_options.leaf_steps = o.leaf_steps;
   if (o.leaf_call < -1 || o.leaf_call > 2) throw InputError("--direct-leaf: must be -1, 0, 1 or 2");
   bvh_options.leaf_call = o.leaf_call;
   if (o.merge_steps < 0 || o.merge_steps > int(kMaxLeafTriangles))
@@ -237,7 +240,7 @@ int run(const Options& o) {
     std::printf(
         "{\"model\":%s,\"triangles\":%zu,\"width\":%d,\"height\":%d,\"cpu\":%s,\"isa\":%s,"
         "\"intersector\":%s,\"threads\":%d,\"clock\":%s,\"bvh_width\":%d,\"direct_leaf\":%s,"
-        "\"leaf_call\":\"%s\",\"leaf_block\":%u,\"merge_steps\":%d,\"split_budget\":%.3f,"
+        "\"leaf_call\":\"%s\",\"leaf_block\":%u,\"leaf_steps\":%d,\"merge_steps\":%d,\"split_budget\":%.3f,"
         "\"references_per_tri\":%.4f,\"stored_normals\":%s,\"packet_slot_cull\":%s,"
         "\"builds\":%d,\"build_s\":%.6f,\"build_runs_s\":%s,\"build_stages_s\":%s,"
         "\"bytes_per_tri\":%.3f,\"fma_per_cycle\":{\"avx2\":%.2f,\"avx512\":%.2f},",
@@ -245,8 +248,8 @@ int run(const Options& o) {
         json_string(isa_name(config.isa)).c_str(), json_string(intersector_name(config.intersector)).c_str(),
         threads, bench_uses_thread_cpu_time() ? "\"thread_cpu\"" : "\"wall\"", bvh->tree().width(),
         bvh->traversal().leaf_call != LeafCall::table ? "true" : "false",
-        leaf_call_name(bvh->traversal().leaf_call), bvh->leaf_block(), o.merge_steps, double(split_budget),
-        refs_per_tri, bvh->triangles().stores_normals() ? "true" : "false",
+        leaf_call_name(bvh->traversal().leaf_call), bvh->leaf_block(), bvh->leaf_steps(), o.merge_steps,
+        double(split_budget), refs_per_tri, bvh->triangles().stores_normals() ? "true" : "false",
         bvh->tree().arrays().packet_slot_cull ? "true" : "false", o.builds, build_s,
         json_array(build_runs).c_str(), stage_medians(stage_runs, true).c_str(), bytes_per_tri, fma.avx2,
         fma.avx512);
@@ -278,12 +281,12 @@ int run(const Options& o) {
                   ? " (512-bit operations at half rate here: 16-wide kernels keep no edge in lanes a cycle)"
                   : "");
   std::printf(
-      "bvh: %d-wide, %u nodes, %u leaves (SAH leaf block %u, merged up to %d kernel steps), "
+      "bvh: %d-wide, %u nodes, %u leaves (SAH leaf block %u, %d-step leaves, merged up to %d kernel steps), "
       "%.3f references per triangle (spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, "
       "packet slot cull %s; "
       "build %.4f s (%s); %.1f bytes/triangle (nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), bvh->leaf_block(),
-      o.merge_steps, refs_per_tri, double(split_budget), bvh->tree().depth(),
+      bvh->leaf_steps(), o.merge_steps, refs_per_tri, double(split_budget), bvh->tree().depth(),
       leaf_call_name(bvh->traversal().leaf_call),
       bvh->triangles().stores_normals() ? "stored" : "formed per step",
       bvh->tree().arrays().packet_slot_cull ? "on" : "off", build_s, stage_medians(stage_runs, false).c_str(),
@@ -336,6 +339,10 @@ void register_bench_rays_command(Command& bench) {
       .option("--bvh-width", o.width,
               "children per BVH node: 8 or 16 (the scalar ISA also 4); 0 = the default (AVX-512 and "
               "AVX2: 16 from 32768 triangles up, else 8; AVX-512 on Intel: 16 at every size)")
+      .option("--leaf-steps", o.leaf_steps,
+              "tuning: most leaf-kernel steps (16 triangles on AVX-512, 8 on AVX2) a SAH leaf holds, 1 or 2; "
+              "0 = the default (1 below " +
+                  std::to_string(kWideNodeTriangles) + " triangles, 2 from there; 1 at every size on Intel)")
       .option("--max-leaf", o.max_leaf, "tuning: most triangles per BVH leaf (0 = default)")
       .option("--leaf-block", o.leaf_block, "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)")
       .option("--merge-steps", o.merge_steps,

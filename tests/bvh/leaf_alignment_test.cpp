@@ -266,16 +266,28 @@ uint32_t largest_leaf(const WideBvh& tree) {
   return largest;
 }
 
-// Leaves of one kernel step for small meshes, two for large ones and the scalar ISA
-// (bvh_traversal.h); a BvhAccelerator's unmerged leaves keep to the rule on every SIMD ISA the CPU has.
+// Leaves of one kernel step for small meshes, and on Intel for every mesh; two for AMD's large ones
+// and the scalar ISA (bvh_traversal.h); a BvhAccelerator's unmerged leaves keep to the rule, or to
+// BvhOptions::leaf_steps, on every SIMD ISA the CPU has.
 TEST(LeafAlignment, SmallMeshesHoldOneKernelStepPerLeaf) {
   for (const Isa isa : {Isa::avx2, Isa::avx512}) {
-    EXPECT_EQ(default_leaf_steps(isa, 100), 1);
-    EXPECT_EQ(default_leaf_steps(isa, kWideNodeTriangles - 1), 1);
-    EXPECT_EQ(default_leaf_steps(isa, kWideNodeTriangles), 2);
+    for (const char* vendor : {"AuthenticAMD", "GenuineIntel", ""}) {
+      EXPECT_EQ(default_leaf_steps(isa, 100, vendor), 1);
+      EXPECT_EQ(default_leaf_steps(isa, kWideNodeTriangles - 1, vendor), 1);
+    }
+    for (const char* amd_or_other : {"AuthenticAMD", "HygonGenuine", ""}) {
+      EXPECT_EQ(default_leaf_steps(isa, kWideNodeTriangles, amd_or_other), 2);
+      EXPECT_EQ(default_leaf_steps(isa, std::size_t(1) << 24, amd_or_other), 2);
+    }
+    EXPECT_EQ(default_leaf_steps(isa, kWideNodeTriangles, "GenuineIntel"), 1);
+    EXPECT_EQ(default_leaf_steps(isa, std::size_t(1) << 24, "GenuineIntel"), 1);
+    EXPECT_EQ(default_leaf_steps(isa, kWideNodeTriangles),
+              default_leaf_steps(isa, kWideNodeTriangles, cpu_features().vendor));  // this CPU's vendor
   }
-  EXPECT_EQ(default_leaf_steps(Isa::scalar, 100), 2);
+  EXPECT_EQ(default_leaf_steps(Isa::scalar, 100, "GenuineIntel"), 2);
+  EXPECT_EQ(default_leaf_steps(Isa::scalar, 100, "AuthenticAMD"), 2);
   const TriangleMesh soup = test::random_soup(4000, 0.01f, 5);
+  const TriangleMesh big = test::random_soup(int(kWideNodeTriangles), 0.01f, 3);
   for (const Isa isa : {Isa::avx2, Isa::avx512}) {
     if (!isa_supported(isa)) {
       std::printf("skipped ISA %s: not on this CPU\n", isa_name(isa));
@@ -285,8 +297,19 @@ TEST(LeafAlignment, SmallMeshesHoldOneKernelStepPerLeaf) {
     unmerged.merge_steps = 0;
     const BvhAccelerator bvh(soup, TraceConfig{isa, Intersector::mt}, unmerged);
     const uint32_t block = isa == Isa::avx512 ? 16 : 8;
+    EXPECT_EQ(bvh.leaf_steps(), 1) << isa_name(isa);
     EXPECT_LE(largest_leaf(bvh.tree()), block) << isa_name(isa);
     EXPECT_GT(largest_leaf(bvh.tree()), 1u) << isa_name(isa);
+    for (const int steps : {1, 2}) {
+      BvhOptions given = unmerged;
+      given.leaf_steps = steps;
+      const BvhAccelerator large(big, TraceConfig{isa, Intersector::mt}, given);
+      EXPECT_EQ(large.leaf_steps(), steps) << isa_name(isa);
+      EXPECT_LE(largest_leaf(large.tree()), uint32_t(steps) * block) << isa_name(isa) << ", " << steps;
+      EXPECT_GT(largest_leaf(large.tree()), uint32_t(steps - 1) * block) << isa_name(isa) << ", " << steps;
+    }
+    const BvhAccelerator by_default(big, TraceConfig{isa, Intersector::mt}, unmerged);
+    EXPECT_EQ(by_default.leaf_steps(), default_leaf_steps(isa, big.size())) << isa_name(isa);
   }
 }
 
