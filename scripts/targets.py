@@ -20,8 +20,9 @@ Sections (each can be skipped; one whose tool is missing is skipped with the rea
   choices  the defaults that depend on the CPU's vendor or the mesh's size (`rayvec info` prints
            their rules), each option against its alternative on meshes either side of its line, per
            ISA (`bench rays --vs-embree`, 512x512, ratio of the ratios to Embree per round): node
-           width, leaf call, packet slot cull, leaf steps (on meshes above 32,768 triangles, where
-           the vendor decides) — the measurements their Decisions rest on, on this CPU
+           width, leaf call, packet slot cull, and one leaf step against two above 32,768 triangles
+           (tracing only; the build's cost is in the Decision) — the measurements their Decisions
+           rest on, on this CPU
   povray   every scenes/*.json and the 1M sphere's scene, `rayvec render --spp 1 --threads 1`
            against POV-Ray 3.7 on the converted scene (scripts/scene_to_pov.py), CPU time of the
            whole processes, alternating rounds; RMSE of the two pictures

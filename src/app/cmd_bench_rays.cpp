@@ -342,7 +342,7 @@ void register_bench_rays_command(Command& bench) {
       .option("--leaf-steps", o.leaf_steps,
               "tuning: most leaf-kernel steps (16 triangles on AVX-512, 8 on AVX2) a SAH leaf holds, 1 or 2; "
               "0 = the default (1 below " +
-                  std::to_string(kWideNodeTriangles) + " triangles, 2 from there; 1 at every size on Intel)")
+                  std::to_string(kWideNodeTriangles) + " triangles, 2 from there)")
       .option("--max-leaf", o.max_leaf, "tuning: most triangles per BVH leaf (0 = default)")
       .option("--leaf-block", o.leaf_block, "tuning: SAH leaf cost = ceil(n / leaf-block) (0 = default)")
       .option("--merge-steps", o.merge_steps,

@@ -30,8 +30,8 @@ void print_bvh_defaults(Isa isa, std::string_view vendor) {
   std::printf(
       "          bvh: %d-wide nodes and %d-step leaves below %zu triangles (costed per step or per half "
       "step, whichever tree costs less), %d-wide and %d-step from there\n",
-      default_bvh_width(isa, small, vendor), default_leaf_steps(isa, small, vendor), large,
-      default_bvh_width(isa, large, vendor), default_leaf_steps(isa, large, vendor));
+      default_bvh_width(isa, small, vendor), default_leaf_steps(isa, small), large,
+      default_bvh_width(isa, large, vendor), default_leaf_steps(isa, large));
 }
 
 }  // namespace

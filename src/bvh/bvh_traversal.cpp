@@ -25,13 +25,8 @@ int default_bvh_width(Isa isa, std::size_t triangles) {
   return default_bvh_width(isa, triangles, cpu_features().vendor);
 }
 
-int default_leaf_steps(Isa isa, std::size_t triangles, std::string_view vendor) {
-  if (isa == Isa::scalar) return 2;
-  return vendor == "GenuineIntel" || triangles < kWideNodeTriangles ? 1 : 2;
-}
-
 int default_leaf_steps(Isa isa, std::size_t triangles) {
-  return default_leaf_steps(isa, triangles, cpu_features().vendor);
+  return isa != Isa::scalar && triangles < kWideNodeTriangles ? 1 : 2;
 }
 
 const char* leaf_call_name(LeafCall call) {

@@ -70,13 +70,11 @@ int default_bvh_width(Isa isa, std::size_t triangles, std::string_view vendor);
 int default_bvh_width(Isa isa, std::size_t triangles);
 
 // How many kernel steps (blocks of the kernel's width) a leaf of the binned SAH over `triangles`
-// triangles may hold by default on a CPU whose cpuid vendor is `vendor`: one for the SIMD ISAs below
-// kWideNodeTriangles (small meshes: packets and shadow rays gain up to 18 % on Intel and AMD alike,
-// incoherent rays lose up to 6 %), two from there — except on Intel, one at every size (its medium
-// and large meshes' shadow rays gain up to 7 % at AVX-512 and 4 % at AVX2, no set loses over 1.5 %;
-// not measured on AMD, whose large meshes keep two) (benchmarks.md#decision-leaf-size). The
-// two-argument form uses the running CPU's vendor.
-int default_leaf_steps(Isa isa, std::size_t triangles, std::string_view vendor);
+// triangles may hold by default: one for the SIMD ISAs below kWideNodeTriangles (small meshes:
+// packets and shadow rays gain up to 18 % on Intel and AMD alike, incoherent rays lose up to 6 %),
+// two otherwise — one step there traces shadow and incoherent rays up to 10 % faster on Intel but
+// builds 5–15 % slower, which a render of one sample a pixel does not win back
+// (benchmarks.md#decision-leaf-size).
 int default_leaf_steps(Isa isa, std::size_t triangles);
 
 // How the traversals reach the leaf kernel of `intersector` in a BVH over `triangles` triangles.

@@ -48,11 +48,11 @@ TEST(InfoCli, NamesTheBvhShapeOfEverySupportedSimdIsa) {
     const std::string line = r.out.substr(bvh, r.out.find('\n', bvh) - bvh);
     const std::string expected =
         "bvh: " + std::to_string(default_bvh_width(isa, kWideNodeTriangles - 1, vendor)) +
-        "-wide nodes and " + std::to_string(default_leaf_steps(isa, kWideNodeTriangles - 1, vendor)) +
+        "-wide nodes and " + std::to_string(default_leaf_steps(isa, kWideNodeTriangles - 1)) +
         "-step leaves below " + std::to_string(kWideNodeTriangles) +
         " triangles (costed per step or per half step, whichever tree costs less), " +
         std::to_string(default_bvh_width(isa, kWideNodeTriangles, vendor)) + "-wide and " +
-        std::to_string(default_leaf_steps(isa, kWideNodeTriangles, vendor)) + "-step from there";
+        std::to_string(default_leaf_steps(isa, kWideNodeTriangles)) + "-step from there";
     EXPECT_NE(line.find(expected), std::string::npos) << line << "\nexpected: " << expected;
   }
 }
