@@ -165,8 +165,6 @@ int run(const Options& o) {
     bvh_options.sah.max_leaf = uint32_t(o.max_leaf);
     bvh_options.leaves_from_kernel = false;
   }
-  if (o.leaf_steps < 0 || o.leaf_steps > 2) throw InputError("--leaf-steps: must be 0, 1 or 2");
-  bvh_options.leaf_steps = o.leaf_steps;
   if (o.leaf_call < -1 || o.leaf_call > 2) throw InputError("--direct-leaf: must be -1, 0, 1 or 2");
   bvh_options.leaf_call = o.leaf_call;
   if (o.merge_steps < 0 || o.merge_steps > int(kMaxLeafTriangles))
@@ -183,6 +181,10 @@ int run(const Options& o) {
     bvh_options.sah.leaf_block = uint32_t(o.leaf_block);
     bvh_options.leaves_from_kernel = false;
   }
+  if (o.leaf_steps < 0 || o.leaf_steps > 2) throw InputError("--leaf-steps: must be 0, 1 or 2");
+  if (o.leaf_steps != 0 && !bvh_options.leaves_from_kernel)
+    throw InputError("--leaf-steps: not with --max-leaf or --leaf-block, which size the leaves themselves");
+  bvh_options.leaf_steps = o.leaf_steps;
   // start the OpenMP threads before timing (Embree's device starts its threads before its build too)
 #pragma omp parallel
   { (void)omp_get_thread_num(); }
@@ -280,13 +282,16 @@ int run(const Options& o) {
               fma.avx512 > 0 && fma.avx512 < 0.7 * fma.avx2
                   ? " (512-bit operations at half rate here: 16-wide kernels keep no edge in lanes a cycle)"
                   : "");
+  const std::string leaf_steps_text = bvh->leaf_steps() > 0
+                                          ? std::to_string(bvh->leaf_steps()) + "-step leaves"
+                                          : "leaves up to the builder's size";
   std::printf(
-      "bvh: %d-wide, %u nodes, %u leaves (SAH leaf block %u, %d-step leaves, merged up to %d kernel steps), "
+      "bvh: %d-wide, %u nodes, %u leaves (SAH leaf block %u, %s, merged up to %d kernel steps), "
       "%.3f references per triangle (spatial-split budget %.2f), depth %u, leaf kernel: %s, normals %s, "
       "packet slot cull %s; "
       "build %.4f s (%s); %.1f bytes/triangle (nodes %.1f + triangles %.1f)\n",
       bvh->tree().width(), bvh->tree().node_count(), bvh->tree().leaf_count(), bvh->leaf_block(),
-      bvh->leaf_steps(), o.merge_steps, refs_per_tri, double(split_budget), bvh->tree().depth(),
+      leaf_steps_text.c_str(), o.merge_steps, refs_per_tri, double(split_budget), bvh->tree().depth(),
       leaf_call_name(bvh->traversal().leaf_call),
       bvh->triangles().stores_normals() ? "stored" : "formed per step",
       bvh->tree().arrays().packet_slot_cull ? "on" : "off", build_s, stage_medians(stage_runs, false).c_str(),

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bvh/bvh_scenes.h"
+#include "platform/isa.h"
 #include "test_support.h"
 
 namespace rayvec {
@@ -85,6 +86,30 @@ TEST(OptionLimits, BenchRaysSplitBudgetIsAFractionAndReported) {
   const std::size_t at = split.out.find(key);
   ASSERT_NE(at, std::string::npos) << split.out;
   EXPECT_GT(std::stod(split.out.substr(at + key.size())), 1.05) << split.out;
+}
+
+// --leaf-steps is 1 or 2 kernel steps (0: the default), refused beside --max-leaf or --leaf-block,
+// which size the leaves themselves; in range it is run and reported where the leaves are sized to a
+// SIMD kernel.
+TEST(OptionLimits, BenchRaysLeafStepsAreOneOrTwoAndReported) {
+  const std::string dir = test::temp_dir("option_leaf_steps");
+  test::write_file(dir + "/m.obj", "v 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\n");
+  const std::string bench = "bench rays " + dir + "/m.obj --size 4x4 --repeats 1 --builds 1 --json";
+  for (const char* bad : {" --leaf-steps 3", " --leaf-steps -1"}) {
+    const auto r = test::run_cli(bench + bad);
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find("--leaf-steps: must be 0, 1 or 2"), std::string::npos) << bad << ": " << r.err;
+  }
+  for (const char* both : {" --leaf-steps 2 --max-leaf 8", " --leaf-steps 1 --leaf-block 4"}) {
+    const auto r = test::run_cli(bench + both);
+    EXPECT_EQ(r.status, 2) << both << ": " << r.err;
+    EXPECT_NE(r.err.find("--leaf-steps: not with --max-leaf or --leaf-block"), std::string::npos)
+        << both << ": " << r.err;
+  }
+  if (!isa_supported(Isa::avx2)) GTEST_SKIP() << "no AVX2 on this CPU: leaves are not sized to a kernel";
+  const auto r = test::run_cli(bench + " --isa avx2 --leaf-steps 2");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"leaf_steps\":2"), std::string::npos) << r.out;
 }
 
 }  // namespace
