@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 
 #include "bvh/bvh_scenes.h"
@@ -17,6 +18,16 @@ namespace fs = std::filesystem;
 
 bool empty_but(const std::string& dir, std::size_t n) {
   return std::size_t(std::distance(fs::directory_iterator(dir), fs::directory_iterator())) == n;
+}
+
+// Each of `bad` appended to `command` exits 2 with `message` on stderr.
+void expect_refused(const std::string& command, std::initializer_list<const char*> bad,
+                    const std::string& message) {
+  for (const char* b : bad) {
+    const auto r = test::run_cli(command + b);
+    EXPECT_EQ(r.status, 2) << b << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << b << ": " << r.err;
+  }
 }
 
 TEST(OptionLimits, ThreadsAboveTheBoundAreRefusedForEveryCommand) {
@@ -49,11 +60,7 @@ TEST(OptionLimits, BenchRaysMergeStepsAreBounded) {
   const std::string dir = test::temp_dir("option_merge_steps");
   test::write_file(dir + "/m.obj", "v 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\n");
   const std::string bench = "bench rays " + dir + "/m.obj --size 4x4 --repeats 1 --builds 1";
-  for (const char* bad : {" --merge-steps 33", " --merge-steps -1"}) {
-    const auto r = test::run_cli(bench + bad);
-    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
-    EXPECT_NE(r.err.find("--merge-steps: must be 0 to 32"), std::string::npos) << bad << ": " << r.err;
-  }
+  expect_refused(bench, {" --merge-steps 33", " --merge-steps -1"}, "--merge-steps: must be 0 to 32");
   const auto r = test::run_cli(bench + " --merge-steps 0 --json");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"merge_steps\":0"), std::string::npos) << r.out;
@@ -95,17 +102,9 @@ TEST(OptionLimits, BenchRaysLeafStepsAreOneOrTwoAndReported) {
   const std::string dir = test::temp_dir("option_leaf_steps");
   test::write_file(dir + "/m.obj", "v 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\n");
   const std::string bench = "bench rays " + dir + "/m.obj --size 4x4 --repeats 1 --builds 1 --json";
-  for (const char* bad : {" --leaf-steps 3", " --leaf-steps -1"}) {
-    const auto r = test::run_cli(bench + bad);
-    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
-    EXPECT_NE(r.err.find("--leaf-steps: must be 0, 1 or 2"), std::string::npos) << bad << ": " << r.err;
-  }
-  for (const char* both : {" --leaf-steps 2 --max-leaf 8", " --leaf-steps 1 --leaf-block 4"}) {
-    const auto r = test::run_cli(bench + both);
-    EXPECT_EQ(r.status, 2) << both << ": " << r.err;
-    EXPECT_NE(r.err.find("--leaf-steps: not with --max-leaf or --leaf-block"), std::string::npos)
-        << both << ": " << r.err;
-  }
+  expect_refused(bench, {" --leaf-steps 3", " --leaf-steps -1"}, "--leaf-steps: must be 0, 1 or 2");
+  expect_refused(bench, {" --leaf-steps 2 --max-leaf 8", " --leaf-steps 1 --leaf-block 4"},
+                 "--leaf-steps: not with --max-leaf or --leaf-block");
   if (!isa_supported(Isa::avx2)) GTEST_SKIP() << "no AVX2 on this CPU: leaves are not sized to a kernel";
   const auto r = test::run_cli(bench + " --isa avx2 --leaf-steps 2");
   EXPECT_EQ(r.status, 0) << r.err;
