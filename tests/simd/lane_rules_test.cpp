@@ -119,6 +119,46 @@ TEST_P(LaneRules, PacketHullIsTheExtremesOfItsLanes) {
   }
 }
 
+// The offsets k = o·r' a forward packet subtracts in every box test, and the hull's, are never
+// subnormal where the origin's coordinate is 0 or normal: a camera on an axis plane (o = 0) gives the
+// outward move's floor, the smallest normal float, not one subnormal step — a subnormal operand
+// costs Intel's FMAs a microcode assist in every box test. And they stay outward of the product:
+// kn above o·nr, kf below o·fr.
+TEST_P(LaneRules, PacketOffsetsOfAnOriginOnAnAxisPlaneAreNormal) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (int trial = 0; trial < 50; ++trial) {
+    alignas(64) float soa[8][16];
+    for (int a = 0; a < 3; ++a) {
+      const float sign = rng() % 2 ? -1.0f : 1.0f;
+      for (int k = 0; k < 16; ++k) {
+        soa[a][k] = a == trial % 3 || rng() % 4 == 0 ? (rng() % 2 ? 0.0f : -0.0f) : 4.0f * unit(rng) - 2.0f;
+        soa[3 + a][k] = sign * (0.5f + 64.0f * unit(rng));
+      }
+    }
+    for (int k = 0; k < 16; ++k) {
+      soa[6][k] = 0.0f;
+      soa[7][k] = kInf;
+    }
+    test::PacketHullLanes got;
+    rules().packet_hull(&soa[0][0], 0xffffu, 0x1p-20f, &got);
+    const auto normal_or_zero = [](float x) { return x == 0.0f || std::abs(x) >= 0x1p-126f; };
+    for (int a = 0; a < 3; ++a) {
+      for (int k = 0; k < 16; ++k) {
+        const float kn = got.lanes[6 + a][k], kf = got.lanes[9 + a][k];
+        EXPECT_TRUE(normal_or_zero(kn) && normal_or_zero(kf))
+            << "axis " << a << " lane " << k << ", " << isa_name(GetParam()) << ": kn " << kn << ", kf "
+            << kf;
+        const double o = soa[a][k];
+        EXPECT_GT(double(kn), o * double(got.lanes[a][k])) << "axis " << a << " lane " << k;
+        EXPECT_LT(double(kf), o * double(got.lanes[3 + a][k])) << "axis " << a << " lane " << k;
+      }
+      EXPECT_TRUE(normal_or_zero(got.hull[12 + a]) && normal_or_zero(got.hull[15 + a]))
+          << "hull axis " << a << ", " << isa_name(GetParam());
+    }
+  }
+}
+
 // det's orientation by an FMA with sign_one(det) = ±1 (Intel's table) gives the bits of the sign
 // flip and add (the others'): s·x is exact, and both round the same sum once; with 0 added, −0
 // becomes +0 either way. A NaN stays a NaN. The one-origin group test takes one form or the other

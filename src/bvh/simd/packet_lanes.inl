@@ -112,9 +112,13 @@ struct PacketForward {
     return k;
   }
   // p moved away from zero-crossing toward `dir` (+1 up, −1 down) by more than its rounding
-  // error: max(|p|·2^-22, 2^-149) is at least two ulps of a normal p and one subnormal step.
+  // error: max(|p|·2^-22, 2^-126) is at least two ulps of a normal p and more than the error of a
+  // subnormal one. The floor is the smallest normal float, not one subnormal step: an origin
+  // coordinate of 0 (a camera on an axis plane) gives p = 0, and a subnormal offset in every box
+  // test's FMA took Intel's microcode assist, several times the traversal's time
+  // (benchmarks.md#decision-normal-box-offsets).
   static RAYVEC_INLINE V outward(V p, V dir) {
-    const V step = vmax(abs(p) * V::broadcast(0x1p-22f), V::broadcast(0x1p-149f));
+    const V step = vmax(abs(p) * V::broadcast(0x1p-22f), V::broadcast(0x1p-126f));
     return fmadd(step, dir, p);
   }
   RAYVEC_INLINE void set_tmax(const float* t) { tmax = V::load(t); }
